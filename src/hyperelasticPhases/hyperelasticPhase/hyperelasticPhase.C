@@ -1,0 +1,108 @@
+#include "hyperelasticPhase.H"
+
+Foam::hyperelasticPhase::hyperelasticPhase
+(
+    const word& name,
+    const dictionary& dict
+)
+:
+    name_(name),
+    solid_(false),
+    eos_(),
+    elastic_()
+{
+    const word phaseType(dict.get<word>("type"));
+
+    if (phaseType == "solid")
+    {
+        solid_ = true;
+    }
+    else if (phaseType != "fluid")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Phase " << name << ": type " << phaseType
+            << " is neither solid nor fluid" << exit(FatalIOError);
+    }
+
+    eos_ = equationOfState::New(name, dict.subDict("equationOfState"));
+
+    if (solid_)
+    {
+        elastic_ = elasticModel::New(name, dict.subDict("elasticity"));
+    }
+    else if (dict.found("elasticity"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Phase " << name << " is a fluid but has an elasticity entry;"
+            << " make it type solid or remove the entry" << exit(FatalIOError);
+    }
+}
+
+
+const Foam::elasticModel& Foam::hyperelasticPhase::elastic() const
+{
+    if (!solid_)
+    {
+        FatalErrorInFunction
+            << "Phase " << name_ << " is a fluid: it has no elasticity"
+            << abort(FatalError);
+    }
+    return *elastic_;
+}
+
+
+Foam::cobasis::matrix Foam::hyperelasticPhase::acousticTensor
+(
+    const scalar rho,
+    const scalar p,
+    const cobasis::matrix& A,
+    const cobasis::vector& n
+) const
+{
+    cobasis::matrix Q = eos_->c2(rho, p)*(n*n.transpose());
+    if (solid_)
+    {
+        Q += elastic_->Qe(A, n)/rho;
+    }
+    return Q;
+}
+
+
+Foam::cobasis::vector Foam::hyperelasticPhase::waveSpeeds2
+(
+    const scalar rho,
+    const scalar p,
+    const cobasis::matrix& A,
+    const cobasis::vector& n
+) const
+{
+    Eigen::SelfAdjointEigenSolver<cobasis::matrix> eig
+    (
+        acousticTensor(rho, p, A, n),
+        Eigen::EigenvaluesOnly
+    );
+    return eig.eigenvalues();
+}
+
+
+Foam::scalar Foam::hyperelasticPhase::a2Max
+(
+    const scalar rho,
+    const scalar p,
+    const cobasis::matrix& A
+) const
+{
+    if (!solid_)
+    {
+        return eos_->c2(rho, p);
+    }
+
+    Eigen::SelfAdjointEigenSolver<cobasis::matrix> eig(A.transpose()*A);
+    scalar a2 = 0;
+    for (int d = 0; d < 3; ++d)
+    {
+        const cobasis::vector n(eig.eigenvectors().col(d));
+        a2 = max(a2, waveSpeeds2(rho, p, A, n)(2));
+    }
+    return a2;
+}

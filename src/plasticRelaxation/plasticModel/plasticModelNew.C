@@ -1,0 +1,24 @@
+#include "plasticModel.H"
+
+Foam::autoPtr<Foam::plasticModel> Foam::plasticModel::New
+(
+    const word& phaseName,
+    const dictionary& dict
+)
+{
+    const word modelType(dict.get<word>("type"));
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown plasticity type " << modelType
+            << " for phase " << phaseName << nl << nl
+            << "Valid types are :" << nl
+            << dictionaryConstructorTablePtr_->sortedToc()
+            << exit(FatalIOError);
+    }
+
+    return cstrIter()(phaseName, dict);
+}
