@@ -1,0 +1,84 @@
+/*---------------------------------------------------------------------------*\
+  impactFoam: Eulerian multiphase elastic-plastic impact solver for OpenFOAM
+-------------------------------------------------------------------------------
+Application
+    impactFoam
+
+Description
+    Explicit solver for impacts between several compressible elastic-plastic
+    solids and fluids on one Eulerian mesh: the diffuse-interface model of
+    Hank, Gavrilyuk, Favrie & Massoni (Int. J. Impact Eng. 2017) discretised
+    by the discrete equations method.
+
+    Each step: hyperbolic DEM step (face Riemann problems between the phases
+    in contact), then velocity, pressure and plastic relaxation.
+
+    Dictionaries: constant/phaseProperties (phases and their models),
+    system/fvSchemes discreteEquations { riemannSolver HLLC; } and
+    gradSchemes grad(U) (velocity reconstruction), system/controlDict maxCo
+    (default 0.4) and maxDeltaT; constant/g (optional gravity).
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "phaseSystem.H"
+#include "demSolver.H"
+#include "mechanicalRelaxation.H"
+#include "uniformDimensionedFields.H"
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Eulerian multiphase elastic-plastic impact solver"
+        " (discrete equations method)"
+    );
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createFields.H"
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        dem.prepare();
+
+        const scalar dtStable = dem.stableDeltaT();
+        scalar dt = min(maxCo*dtStable, maxDeltaT);
+        dt = min(dt, runTime.endTime().value() - runTime.value());
+        runTime.setDeltaT(dt);
+        dt = runTime.deltaTValue();
+
+        const scalar oldTime = runTime.value();
+        const label oldIndex = runTime.timeIndex();
+
+        #include "saveState.H"
+
+        ++runTime;
+
+        Info<< "Time = " << runTime.timeName()
+            << "  deltaT = " << dt
+            << "  Courant Number max = " << dt/dtStable << endl;
+
+        dem.hyperbolicStep(dt, q);
+
+        #include "bodyForces.H"
+
+        const mechanicalRelaxation::stateError err = relaxation.correct(q, dt);
+
+        #include "checkState.H"
+
+        phases.correctBoundaryConditions();
+        phases.correctMixture();
+
+        runTime.write();
+    }
+
+    runTime.printExecutionTime(Info);
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}

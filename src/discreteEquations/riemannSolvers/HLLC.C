@@ -1,0 +1,105 @@
+#include "HLLC.H"
+#include <algorithm>
+#include <cmath>
+
+namespace
+{
+
+// Guard of a denominator that may vanish for trace-phase pairs
+inline double guard(const double d)
+{
+    const double tiny = 1e-300;
+    return std::abs(d) > tiny ? d : (d < 0 ? -tiny : tiny);
+}
+
+} // End anonymous namespace
+
+
+Foam::riemannSolution Foam::HLLC::solve
+(
+    const riemannState& L,
+    const riemannState& R
+)
+{
+    const double uL = L.v(0);
+    const double uR = R.v(0);
+
+    // Davis estimates
+    const double SL = std::min(uL - L.a, uR - R.a);
+    const double SR = std::max(uL + L.a, uR + R.a);
+
+    // Longitudinal impedances m_K = rho_K (u_K - S_K): mL > 0 > mR
+    const double mL = L.rho*(uL - SL);
+    const double mR = R.rho*(uR - SR);
+
+    riemannSolution sol;
+
+    const double Sstar =
+        (L.s(0) - R.s(0) + mL*uL - mR*uR)/guard(mL - mR);
+    sol.uStar = Sstar;
+
+    // Normal star traction
+    sol.tStar(0) =
+        (mR*L.s(0) - mL*R.s(0) + mL*mR*(uR - uL))/guard(mR - mL);
+
+    // Tangential star traction and velocities
+    double mtL = mL, mtR = mR;
+    if (L.solid && R.solid)
+    {
+        // Welded contact; shear impedance rho c_T with the sign of u - S
+        mtL = L.rho*L.cT;
+        mtR = -R.rho*R.cT;
+        for (int j = 1; j < 3; ++j)
+        {
+            sol.tStar(j) =
+                (mtR*L.s(j) - mtL*R.s(j) + mtL*mtR*(R.v(j) - L.v(j)))
+               /guard(mtR - mtL);
+        }
+    }
+    else
+    {
+        // A fluid holds no shear
+        sol.tStar(1) = 0;
+        sol.tStar(2) = 0;
+        if (L.solid) mtL = L.rho*L.cT;
+        if (R.solid) mtR = -R.rho*R.cT;
+    }
+
+    sol.vStarL(0) = Sstar;
+    sol.vStarR(0) = Sstar;
+    for (int j = 1; j < 3; ++j)
+    {
+        sol.vStarL(j) =
+            L.solid ? L.v(j) + (sol.tStar(j) - L.s(j))/guard(mtL) : L.v(j);
+        sol.vStarR(j) =
+            R.solid ? R.v(j) + (sol.tStar(j) - R.s(j))/guard(mtR) : R.v(j);
+    }
+
+    // Flux of the state at x/t = 0, on the upwind side of the contact
+    const bool left = (Sstar >= 0);
+    const riemannState& K = left ? L : R;
+    const double SK = left ? SL : SR;
+
+    if ((left && SL >= 0) || (!left && SR < 0))
+    {
+        // Unperturbed state
+        const double un = K.v(0);
+        sol.massFlux = K.rho*un;
+        sol.momentumFlux = K.rho*un*K.v - K.s;
+        sol.energyFlux = K.rho*K.E*un - K.s.dot(K.v);
+    }
+    else
+    {
+        const cobasis::vector& vStar = left ? sol.vStarL : sol.vStarR;
+        const double d = guard(SK - Sstar);
+        const double rhoStar = K.rho*(SK - K.v(0))/d;
+        const double rhoEStar =
+            (K.rho*K.E*(SK - K.v(0)) + K.s.dot(K.v) - sol.tStar.dot(vStar))/d;
+
+        sol.massFlux = rhoStar*Sstar;
+        sol.momentumFlux = rhoStar*Sstar*vStar - sol.tStar;
+        sol.energyFlux = rhoEStar*Sstar - sol.tStar.dot(vStar);
+    }
+
+    return sol;
+}
