@@ -158,7 +158,6 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
 
         // 2. Velocity relaxation
         const cobasis::vector u(mom/mass);
-        const scalar ke = 0.5*u.squaredNorm();
 
         for (label k = 0; k < nPhases_; ++k)
         {
@@ -178,7 +177,12 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
                     A *= std::cbrt(1/(v0_[k]*ph.rho0()*detA));
                 }
             }
-            eh0_[k] = q.energy[k][c]/m_[k] - ke - ph.elasticEnergy(A);
+            // Own kinetic energy out, the share of the dissipated kinetic
+            // energy 1/2 |u_k - u|^2 in: e_k never decreases
+            const cobasis::vector uk(q.momentum[k][c]/m_[k]);
+            eh0_[k] =
+                q.energy[k][c]/m_[k] - 0.5*uk.squaredNorm()
+              + 0.5*(uk - u).squaredNorm() - ph.elasticEnergy(A);
         }
 
         // 3. Pressure relaxation among the phases that are not traces

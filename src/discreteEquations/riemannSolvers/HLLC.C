@@ -34,8 +34,10 @@ Foam::riemannSolution Foam::HLLC::solve
 
     riemannSolution sol;
 
+    // S* = [s_Ln - s_Rn + rho_L u_L (S_L - u_L) - rho_R u_R (S_R - u_R)]
+    //    / [rho_L (S_L - u_L) - rho_R (S_R - u_R)]
     const double Sstar =
-        (L.s(0) - R.s(0) + mL*uL - mR*uR)/guard(mL - mR);
+        (L.s(0) - R.s(0) - mL*uL + mR*uR)/guard(mR - mL);
     sol.uStar = Sstar;
 
     // Normal star traction
