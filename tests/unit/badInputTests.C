@@ -1,0 +1,352 @@
+/*---------------------------------------------------------------------------*\
+  Unit tests of bad material input (VALIDATION.md V9, library part): every
+  invalid phase or plasticity dictionary stops with a FatalError (thrown as
+  Foam::error here) whose message names the problem.
+\*---------------------------------------------------------------------------*/
+
+#include <gtest/gtest.h>
+#include "hyperelasticPhase.H"
+#include "plasticModel.H"
+#include "unitTestTools.H"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+using namespace Foam;
+using namespace unitTestTools;
+
+namespace
+{
+
+const std::string copperEos
+(
+    "equationOfState { type stiffenedGas; gamma 4.22; pInf 3.42e10; }"
+);
+
+//- A phase dictionary: type, equation of state, elasticity entry
+std::string phaseText
+(
+    const std::string& type,
+    const std::string& elasticity,
+    const std::string& eos = copperEos
+)
+{
+    std::string text("type " + type + "; " + eos);
+    if (!elasticity.empty())
+    {
+        text += " elasticity { " + elasticity + " }";
+    }
+    return text;
+}
+
+//- Call fun, expect a Foam::error whose message contains every key word
+void expectError
+(
+    const std::function<void()>& fun,
+    const std::vector<std::string>& keyWords,
+    const std::string& what
+)
+{
+    try
+    {
+        fun();
+        ADD_FAILURE() << "accepted: " << what;
+    }
+    catch (const Foam::error& err)
+    {
+        const std::string msg(err.message());
+        for (const std::string& key : keyWords)
+        {
+            EXPECT_NE(msg.find(key), std::string::npos)
+                << what << ": message does not contain '" << key << "':\n"
+                << msg;
+        }
+    }
+}
+
+void expectPhaseError
+(
+    const std::string& name,
+    const std::string& text,
+    const std::vector<std::string>& keyWords
+)
+{
+    expectError
+    (
+        [&]() { hyperelasticPhase phase(name, dictFrom(text)); },
+        keyWords,
+        "phase " + name + " { " + text + " }"
+    );
+}
+
+void expectPlasticityError
+(
+    const std::string& text,
+    const std::vector<std::string>& keyWords
+)
+{
+    expectError
+    (
+        [&]() { plasticModel::New("copper", dictFrom(text)); },
+        keyWords,
+        "plasticity { " + text + " }"
+    );
+}
+
+} // End anonymous namespace
+
+
+TEST(badInput, validInputIsAccepted)
+{
+    // The reference dictionaries the other tests spoil one entry at a time
+    EXPECT_NO_THROW
+    (
+        hyperelasticPhase
+        (
+            "copper",
+            dictFrom(phaseText("solid", "type separable; rho0 8900; mu 4.5e10; a 0.5;"))
+        )
+    );
+    EXPECT_NO_THROW(hyperelasticPhase("water", dictFrom(phaseText("fluid", ""))));
+    for (const char* a : {"-1", "0.5", "0"})
+    {
+        EXPECT_NO_THROW
+        (
+            hyperelasticPhase
+            (
+                "copper",
+                dictFrom
+                (
+                    phaseText
+                    (
+                        "solid",
+                        std::string("type separable; rho0 8900; mu 4.5e10; a ")
+                      + a + ";"
+                    )
+                )
+            )
+        ) << "a = " << a;
+    }
+    EXPECT_NO_THROW(plasticModel::New("copper", dictFrom("type vonMises; sigmaY 4e8; tau 0;")));
+    EXPECT_NO_THROW
+    (
+        plasticModel::New
+        (
+            "copper",
+            dictFrom("type vonMises; sigmaY0 4e8; H 1e8; tau 1e-6; n 2;")
+        )
+    );
+    EXPECT_NO_THROW(plasticModel::New("copper", dictFrom("type none;")));
+}
+
+
+TEST(badInput, aOutsideHyperbolicRange)
+{
+    expectPhaseError
+    (
+        "copper",
+        phaseText("solid", "type separable; rho0 8900; mu 4.5e10; a 0.7;"),
+        {"a = 0.7", "copper", "[-1, 1/2]"}
+    );
+    expectPhaseError
+    (
+        "jelly",
+        phaseText("solid", "type separable; rho0 1000; mu 1e4; a -1.2;"),
+        {"a = -1.2", "jelly", "[-1, 1/2]"}
+    );
+    // Just outside the closed interval
+    expectPhaseError
+    (
+        "copper",
+        phaseText("solid", "type separable; rho0 8900; mu 4.5e10; a 0.5000001;"),
+        {"a = ", "copper"}
+    );
+    expectPhaseError
+    (
+        "copper",
+        phaseText("solid", "type separable; rho0 8900; mu 4.5e10; a -1.0000001;"),
+        {"a = ", "copper"}
+    );
+    // A preset contradicted by its own dictionary
+    expectPhaseError
+    (
+        "copper",
+        phaseText("solid", "type metal; rho0 8900; mu 4.5e10; a 0.3;"),
+        {"a = ", "copper", "metal"}
+    );
+    expectPhaseError
+    (
+        "clay",
+        phaseText("solid", "type neoHookean; rho0 1800; mu 1e6; a 0;"),
+        {"a = ", "clay", "neoHookean"}
+    );
+}
+
+
+TEST(badInput, nonPhysicalElasticConstants)
+{
+    expectPhaseError
+    (
+        "copper",
+        phaseText("solid", "type separable; rho0 8900; mu -4.5e10; a 0.5;"),
+        {"mu", "copper"}
+    );
+    expectPhaseError
+    (
+        "clay",
+        phaseText("solid", "type neoHookean; rho0 1800; mu -1;"),
+        {"mu", "clay"}
+    );
+    expectPhaseError
+    (
+        "copper",
+        phaseText("solid", "type metal; rho0 0; mu 4.5e10;"),
+        {"rho0", "copper"}
+    );
+    expectPhaseError
+    (
+        "copper",
+        phaseText("solid", "type metal; rho0 -8900; mu 4.5e10;"),
+        {"rho0", "copper"}
+    );
+    // Equation of state of a solid phase
+    expectPhaseError
+    (
+        "copper",
+        phaseText
+        (
+            "solid",
+            "type metal; rho0 8900; mu 4.5e10;",
+            "equationOfState { type stiffenedGas; gamma 1; pInf 3.42e10; }"
+        ),
+        {"gamma", "copper"}
+    );
+}
+
+
+TEST(badInput, missingKeywords)
+{
+    // OpenFOAM's own message: "Entry 'rho0' not found in dictionary ..."
+    expectPhaseError
+    (
+        "copper",
+        phaseText("solid", "type separable; mu 4.5e10; a 0.5;"),
+        {"rho0"}
+    );
+    expectPhaseError
+    (
+        "copper",
+        phaseText("solid", "type separable; rho0 8900; a 0.5;"),
+        {"mu"}
+    );
+    expectPhaseError
+    (
+        "copper",
+        phaseText("solid", "type separable; rho0 8900; mu 4.5e10;"),
+        {"'a'"}
+    );
+    expectPhaseError
+    (
+        "copper",
+        phaseText("solid", "rho0 8900; mu 4.5e10; a 0.5;"),
+        {"type"}
+    );
+    // Solid without elasticity, phase without equation of state or type
+    expectPhaseError("copper", phaseText("solid", ""), {"elasticity"});
+    expectPhaseError
+    (
+        "copper",
+        "type solid; elasticity { type metal; rho0 8900; mu 4.5e10; }",
+        {"equationOfState"}
+    );
+    expectPhaseError
+    (
+        "copper",
+        copperEos + " elasticity { type metal; rho0 8900; mu 4.5e10; }",
+        {"type"}
+    );
+
+    // Plasticity
+    expectPlasticityError("type vonMises; sigmaY 4e8;", {"tau"});
+    expectPlasticityError("type vonMises; tau 0;", {"sigmaY", "copper"});
+    expectPlasticityError("sigmaY 4e8; tau 0;", {"type"});
+}
+
+
+TEST(badInput, nonPhysicalPlasticity)
+{
+    expectPlasticityError
+    (
+        "type vonMises; sigmaY 0; tau 0;", {"sigmaY", "copper"}
+    );
+    expectPlasticityError
+    (
+        "type vonMises; sigmaY -4e8; tau 0;", {"sigmaY", "copper"}
+    );
+    expectPlasticityError
+    (
+        "type vonMises; sigmaY0 0; H 1e8; tau 0;", {"sigmaY0", "copper"}
+    );
+    expectPlasticityError
+    (
+        "type vonMises; sigmaY 4e8; sigmaY0 4e8; tau 0;",
+        {"sigmaY", "sigmaY0", "copper"}
+    );
+    expectPlasticityError
+    (
+        "type vonMises; sigmaY 4e8; tau -1e-6;", {"tau", "copper"}
+    );
+    expectPlasticityError
+    (
+        "type vonMises; sigmaY0 4e8; H -1e8; tau 0;", {"H", "copper"}
+    );
+    expectPlasticityError
+    (
+        "type vonMises; sigmaY 4e8; tau 1e-6; n -1;", {"n = ", "copper"}
+    );
+}
+
+
+TEST(badInput, unknownTypeNames)
+{
+    expectPhaseError
+    (
+        "copper",
+        phaseText("solid", "type hookean; rho0 8900; mu 4.5e10; a 0.5;"),
+        {"hookean", "elasticity", "copper", "separable"}
+    );
+    expectPhaseError
+    (
+        "copper",
+        phaseText("gel", "type metal; rho0 8900; mu 4.5e10;"),
+        {"gel", "copper", "solid", "fluid"}
+    );
+    expectPhaseError
+    (
+        "copper",
+        phaseText
+        (
+            "solid",
+            "type metal; rho0 8900; mu 4.5e10;",
+            "equationOfState { type mieGruneisen; gamma 2; pInf 0; }"
+        ),
+        {"mieGruneisen", "equationOfState", "copper"}
+    );
+    expectPlasticityError
+    (
+        "type johnsonCook; sigmaY 4e8; tau 0;",
+        {"johnsonCook", "plasticity", "copper", "vonMises"}
+    );
+}
+
+
+TEST(badInput, fluidWithElasticity)
+{
+    expectPhaseError
+    (
+        "water",
+        phaseText("fluid", "type separable; rho0 1000; mu 1e6; a 0;"),
+        {"water", "fluid", "elasticity"}
+    );
+}
