@@ -31,6 +31,17 @@ Foam::elasticModel::elasticModel
 }
 
 
+Foam::cobasis::matrix Foam::elasticModel::dS
+(
+    const cobasis::matrix& A,
+    const cobasis::matrix& dA
+) const
+{
+    const scalar h = 1e-6*max(A.norm(), SMALL)/max(dA.norm(), SMALL);
+    return (SofA(A + h*dA) - SofA(A - h*dA))/(2*h);
+}
+
+
 Foam::cobasis::matrix Foam::elasticModel::Qe
 (
     const cobasis::matrix& A,
@@ -38,11 +49,9 @@ Foam::cobasis::matrix Foam::elasticModel::Qe
 ) const
 {
     cobasis::matrix Q;
-    const scalar h = 1e-6;
     for (int k = 0; k < 3; ++k)
     {
-        const cobasis::matrix dA = -(A.col(k))*n.transpose();
-        Q.col(k) = (SofA(A + h*dA) - SofA(A - h*dA))*n/(2*h);
+        Q.col(k) = dS(A, -(A.col(k))*n.transpose())*n;
     }
     return 0.5*(Q + Q.transpose());
 }

@@ -79,23 +79,16 @@ Foam::cobasis::matrix Foam::elasticModels::separable::S
 }
 
 
-Foam::cobasis::matrix Foam::elasticModels::separable::Qe
+Foam::cobasis::matrix Foam::elasticModels::separable::dS
 (
     const cobasis::matrix& A,
-    const cobasis::vector& n
+    const cobasis::matrix& dA
 ) const
 {
     typedef std::complex<double> cplx;
-    typedef cobasis::matrixT<cplx> M;
 
     const double h = 1e-30;
-    cobasis::matrix Q;
-    for (int k = 0; k < 3; ++k)
-    {
-        const cobasis::matrix dA = -(A.col(k))*n.transpose();
-        const M Ac = A.cast<cplx>() + cplx(0, h)*dA.cast<cplx>();
-        Q.col(k) =
-            (ST(cobasis::g(Ac), cplx(Ac.determinant())).imag()/h)*n;
-    }
-    return 0.5*(Q + Q.transpose());
+    const cobasis::matrixT<cplx> Ac =
+        A.cast<cplx>() + cplx(0, h)*dA.cast<cplx>();
+    return ST(cobasis::g(Ac), cplx(Ac.determinant())).imag()/h;
 }
