@@ -11,6 +11,7 @@
 #include "processorPolyPatch.H"
 #include "slipFvPatchFields.H"
 #include "noSlipFvPatchVectorField.H"
+#include "PstreamBuffers.H"
 
 namespace
 {
@@ -41,6 +42,7 @@ Foam::demSolver::demSolver
     phases_(phases),
     mesh_(phases.mesh()),
     nPhases_(phases.size()),
+    order_(schemeDict.getOrDefault<label>("order", 2)),
     reconstructU_(schemeDict.getOrDefault<bool>("reconstructVelocity", true)),
     patchKinds_(mesh_.boundary().size(), patchKind::value),
     coupledLeft_(mesh_.boundary().size(), true),
@@ -49,7 +51,8 @@ Foam::demSolver::demSolver
     E_(nPhases_),
     a_(nPhases_),
     sigma_(nPhases_),
-    gradU_(mesh_.nCells(), Zero),
+    slopes_(nPhases_),
+    nbrStates_(mesh_.boundary().size()),
     dAlpha_(nPhases_),
     dMass_(nPhases_),
     dMomentum_(nPhases_),
@@ -58,6 +61,10 @@ Foam::demSolver::demSolver
     advection_(nPhases_),
     sideL_(nPhases_),
     sideR_(nPhases_),
+    centre_(nPhases_),
+    cellFace_(nPhases_),
+    ghost_(nPhases_),
+    alphaScratch_(nPhases_),
     faceResult_(nPhases_)
 {
     const word solverName
@@ -70,6 +77,12 @@ Foam::demSolver::demSolver
             << "Unknown riemannSolver " << solverName
             << "; valid: (HLLC)" << exit(FatalIOError);
     }
+    if (order_ != 1 && order_ != 2)
+    {
+        FatalIOErrorInFunction(schemeDict)
+            << "discreteEquations order " << order_ << " is not 1 or 2"
+            << exit(FatalIOError);
+    }
 
     const label nCells = mesh_.nCells();
     for (label k = 0; k < nPhases_; ++k)
@@ -77,6 +90,10 @@ Foam::demSolver::demSolver
         E_[k].resize(nCells);
         a_[k].resize(nCells);
         sigma_[k].resize(nCells);
+        if (order_ == 2)
+        {
+            slopes_[k].resize(nCells);
+        }
         dAlpha_[k].resize(nCells);
         dMass_[k].resize(nCells);
         dMomentum_[k].resize(nCells);
@@ -86,13 +103,22 @@ Foam::demSolver::demSolver
     }
 
     const vectorField& Sf = mesh_.faceAreas();
-    const scalarField& magSf = magSf_;
     forAll(Sf, facei)
     {
-        frames_[facei] = faceFrame::rotation(toEigen(Sf[facei]/magSf[facei]));
+        frames_[facei] =
+            faceFrame::rotation(toEigen(Sf[facei]/magSf_[facei]));
     }
 
     classifyPatches();
+
+    Info<< "Discrete equations: order " << order_ << ", Riemann solver "
+        << solverName;
+    if (order_ == 1)
+    {
+        Info<< ", face velocity reconstruction "
+            << (reconstructU_ ? "on" : "off");
+    }
+    Info<< nl << endl;
 }
 
 
@@ -113,20 +139,17 @@ void Foam::demSolver::classifyPatches()
         }
         else if (patch.coupled())
         {
-            patchKinds_[patchi] = patchKind::coupled;
             const polyPatch& pp = patch.patch();
-            if (isA<processorPolyPatch>(pp))
-            {
-                coupledLeft_[patchi] =
-                    refCast<const processorPolyPatch>(pp).owner();
-            }
-            else
+            if (!isA<processorPolyPatch>(pp))
             {
                 FatalErrorInFunction
                     << "Patch " << patch.name() << " of type " << pp.type()
-                    << ": only processor coupling is supported"
-                    << exit(FatalError);
+                    << ": of the coupled patches only processor patches"
+                    << " are supported" << exit(FatalError);
             }
+            patchKinds_[patchi] = patchKind::coupled;
+            coupledLeft_[patchi] =
+                refCast<const processorPolyPatch>(pp).owner();
         }
         else if (isA<wedgeFvPatch>(patch))
         {
@@ -158,32 +181,371 @@ void Foam::demSolver::completeSide(const label k, phaseSide& s) const
     const hyperelasticPhase& ph = phases_.phase(k);
     s.solid = ph.solid();
     s.trace = s.alpha < phases_.alphaTrace();
+    s.cT = std::sqrt(ph.cT2());
     s.sigma = ph.sigma(s.p, s.A);
     s.E = ph.e(s.rho, s.p, s.A) + 0.5*s.U.squaredNorm();
-    s.a = std::sqrt(ph.a2Max(s.rho, s.p, s.A));
-    s.cT = std::sqrt(ph.cT2());
 }
 
 
-void Foam::demSolver::cellSide
+void Foam::demSolver::centreSides
 (
-    const label k,
     const label celli,
-    phaseSide& s
+    std::vector<phaseSide>& s
 ) const
 {
-    const hyperelasticPhase& ph = phases_.phase(k);
-    s.alpha = phases_.alpha(k)[celli];
-    s.rho = phases_.rho(k)[celli];
-    s.p = phases_.p(k)[celli];
-    s.U = toEigen(phases_.U()[celli]);
-    s.A = toEigen(phases_.A(k)[celli]);
-    s.sigma = sigma_[k][celli];
-    s.E = E_[k][celli];
-    s.a = a_[k][celli];
-    s.cT = std::sqrt(ph.cT2());
-    s.solid = ph.solid();
-    s.trace = s.alpha < phases_.alphaTrace();
+    const vector& Uc = phases_.U()[celli];
+    scalar sumAlpha = 0;
+
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        phaseSide& sk = s[k];
+        sk.alpha = phases_.alpha(k)[celli];
+        sk.rho = phases_.rho(k)[celli];
+        sk.p = phases_.p(k)[celli];
+        sk.U = toEigen(Uc);
+        sk.A = toEigen(phases_.A(k)[celli]);
+        sk.a = a_[k][celli];
+
+        if (order_ == 1)
+        {
+            const hyperelasticPhase& ph = phases_.phase(k);
+            sk.solid = ph.solid();
+            sk.trace = sk.alpha < phases_.alphaTrace();
+            sk.cT = std::sqrt(ph.cT2());
+            sk.sigma = sigma_[k][celli];
+            sk.E = E_[k][celli];
+            continue;
+        }
+
+        const cellSlopes& sl = slopes_[k][celli];
+        if (k < nPhases_ - 1)
+        {
+            sk.alpha = min(max(sk.alpha + sl.dtAlpha, 0.0), 1.0);
+            sumAlpha += sk.alpha;
+        }
+        else
+        {
+            sk.alpha = max(1 - sumAlpha, 0.0);
+        }
+
+        const double rho = sk.rho + sl.dtRho;
+        const double p = sk.p + sl.dtP;
+        const cobasis::matrix A(sk.A + sl.dtA);
+        const hyperelasticPhase& ph = phases_.phase(k);
+        if
+        (
+            rho > 0 && p > ph.eos().pMin()
+         && (!ph.solid() || A.determinant() > 0)
+        )
+        {
+            sk.rho = rho;
+            sk.p = p;
+            sk.U += sl.dtU;
+            sk.A = A;
+        }
+        completeSide(k, sk);
+    }
+}
+
+
+void Foam::demSolver::faceSides
+(
+    const label celli,
+    const vector& d,
+    std::vector<phaseSide>& s
+)
+{
+    const vector& Uc = phases_.U()[celli];
+
+    if (order_ == 1)
+    {
+        cobasis::vector U(toEigen(Uc));
+        double dKe = 0;
+        if (reconstructU_)
+        {
+            U += toEigen(d & gradU_[celli]);
+            dKe = 0.5*(U.squaredNorm() - magSqr(Uc));
+        }
+        for (label k = 0; k < nPhases_; ++k)
+        {
+            phaseSide& sk = s[k];
+            const hyperelasticPhase& ph = phases_.phase(k);
+            sk.alpha = phases_.alpha(k)[celli];
+            sk.rho = phases_.rho(k)[celli];
+            sk.p = phases_.p(k)[celli];
+            sk.U = U;
+            sk.A = toEigen(phases_.A(k)[celli]);
+            sk.sigma = sigma_[k][celli];
+            sk.E = E_[k][celli] + dKe;
+            sk.a = a_[k][celli];
+            sk.cT = std::sqrt(ph.cT2());
+            sk.solid = ph.solid();
+            sk.trace = sk.alpha < phases_.alphaTrace();
+        }
+        return;
+    }
+
+    // Second order: alpha of the first N-1 phases, closed by the sum
+    const cobasis::vector de(toEigen(d));
+    const scalar alphaMin = phases_.alphaMin();
+    scalar sumAlpha = 0;
+    for (label k = 0; k < nPhases_ - 1; ++k)
+    {
+        const cellSlopes& sl = slopes_[k][celli];
+        alphaScratch_[k] = min
+        (
+            max
+            (
+                phases_.alpha(k)[celli] + sl.gAlpha.dot(de) + sl.dtAlpha,
+                alphaMin
+            ),
+            1 - alphaMin
+        );
+        sumAlpha += alphaScratch_[k];
+    }
+    if (sumAlpha > 1 - alphaMin && nPhases_ > 1)
+    {
+        for (label k = 0; k < nPhases_ - 1; ++k)
+        {
+            alphaScratch_[k] *= (1 - alphaMin)/sumAlpha;
+        }
+        sumAlpha = 1 - alphaMin;
+    }
+    alphaScratch_[nPhases_ - 1] = 1 - sumAlpha;
+
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        const cellSlopes& sl = slopes_[k][celli];
+        const hyperelasticPhase& ph = phases_.phase(k);
+        phaseSide& sk = s[k];
+
+        const double rhoc = phases_.rho(k)[celli];
+        const double pc = phases_.p(k)[celli];
+        const cobasis::matrix Ac(toEigen(phases_.A(k)[celli]));
+
+        sk.alpha = alphaScratch_[k];
+        sk.rho = rhoc + sl.gRho.dot(de) + sl.dtRho;
+        sk.p = pc + sl.gP.dot(de) + sl.dtP;
+        sk.U = toEigen(Uc) + sl.gU.transpose()*de + sl.dtU;
+        sk.A = Ac + de(0)*sl.gA[0] + de(1)*sl.gA[1] + de(2)*sl.gA[2] + sl.dtA;
+
+        if
+        (
+            !(sk.rho > 0) || !(sk.p > ph.eos().pMin())
+         || (ph.solid() && !(sk.A.determinant() > 0))
+        )
+        {
+            // An inadmissible predicted state: the cell value
+            sk.rho = rhoc;
+            sk.p = pc;
+            sk.U = toEigen(Uc);
+            sk.A = Ac;
+        }
+
+        completeSide(k, sk);
+
+        // a_f^2 = c_h^2(face) + (a_cell^2 - c_h^2(cell)), >= a_cell^2/4
+        const double ac2 = sqr(a_[k][celli]);
+        const double a2 =
+            ph.eos().c2(sk.rho, sk.p) + ac2 - ph.eos().c2(rhoc, pc);
+        sk.a = std::sqrt(max(a2, 0.25*ac2));
+    }
+}
+
+
+void Foam::demSolver::computeSlopes(const scalar dt)
+{
+    const label nCells = mesh_.nCells();
+    const volVectorField& Ufield = phases_.U();
+    const vectorField& U = Ufield.primitiveField();
+    const tmp<volTensorField> tgradU(fvc::grad(Ufield));
+    const tensorField& gradU = tgradU().primitiveField();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const scalar halfDt = 0.5*dt;
+
+    scalarField minAlpha(nCells);
+
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        const hyperelasticPhase& ph = phases_.phase(k);
+        const volScalarField& alpha = phases_.alpha(k);
+        const scalarField& rho = phases_.rho(k).primitiveField();
+        const scalarField& p = phases_.p(k).primitiveField();
+        const volTensorField& A = phases_.A(k);
+
+        // Minor-phase rule: below 1e-3 in the cell or any neighbour
+        minAlpha = alpha.primitiveField();
+        forAll(nei, facei)
+        {
+            const scalar m = min(alpha[own[facei]], alpha[nei[facei]]);
+            minAlpha[own[facei]] = min(minAlpha[own[facei]], m);
+            minAlpha[nei[facei]] = min(minAlpha[nei[facei]], m);
+        }
+        forAll(mesh_.boundary(), patchi)
+        {
+            if (patchKinds_[patchi] != patchKind::coupled) continue;
+            const scalarField nbr
+            (
+                alpha.boundaryField()[patchi].patchNeighbourField()
+            );
+            const labelUList& fc = mesh_.boundary()[patchi].faceCells();
+            forAll(fc, i)
+            {
+                minAlpha[fc[i]] = min(minAlpha[fc[i]], nbr[i]);
+            }
+        }
+
+        const tmp<volVectorField> tgAlpha(fvc::grad(alpha));
+        const tmp<volVectorField> tgRho(fvc::grad(phases_.rho(k)));
+        const tmp<volVectorField> tgP(fvc::grad(phases_.p(k)));
+        const vectorField& gAlpha = tgAlpha().primitiveField();
+        const vectorField& gRho = tgRho().primitiveField();
+        const vectorField& gP = tgP().primitiveField();
+
+        PtrList<volVectorField> gA(ph.solid() ? 9 : 0);
+        forAll(gA, cmpt)
+        {
+            gA.set(cmpt, fvc::grad(A.component(cmpt)()).ptr());
+        }
+
+        for (label c = 0; c < nCells; ++c)
+        {
+            cellSlopes& sl = slopes_[k][c];
+            const cobasis::vector u(toEigen(U[c]));
+
+            sl.gAlpha = toEigen(gAlpha[c]);
+            sl.dtAlpha = -halfDt*u.dot(sl.gAlpha);
+            sl.minor = minAlpha[c] < 1e-3;
+
+            if (sl.minor)
+            {
+                sl.gRho.setZero();
+                sl.gP.setZero();
+                sl.gU.setZero();
+                for (int i = 0; i < 3; ++i) sl.gA[i].setZero();
+                sl.dtRho = 0;
+                sl.dtP = 0;
+                sl.dtU.setZero();
+                sl.dtA.setZero();
+                continue;
+            }
+
+            sl.gRho = toEigen(gRho[c]);
+            sl.gP = toEigen(gP[c]);
+            sl.gU = toEigen(gradU[c]);
+            for (int i = 0; i < 3; ++i)
+            {
+                if (ph.solid())
+                {
+                    for (int cmpt = 0; cmpt < 9; ++cmpt)
+                    {
+                        sl.gA[i](cmpt/3, cmpt%3) = gA[cmpt][c][i];
+                    }
+                }
+                else
+                {
+                    sl.gA[i].setZero();
+                }
+            }
+
+            // Primitive equations, with L_ij = du_i/dx_j = gU(j, i)
+            const cobasis::matrix L(sl.gU.transpose());
+            const double divU = L.trace();
+            const cobasis::matrix Ac(toEigen(A[c]));
+
+            cobasis::vector divSigma(-sl.gP);
+            if (ph.solid())
+            {
+                for (int j = 0; j < 3; ++j)
+                {
+                    divSigma += ph.elastic().dS(Ac, sl.gA[j]).col(j);
+                }
+            }
+
+            sl.dtRho = -halfDt*(u.dot(sl.gRho) + rho[c]*divU);
+            sl.dtP =
+                -halfDt
+               *(u.dot(sl.gP) + rho[c]*ph.eos().c2(rho[c], p[c])*divU);
+            sl.dtU = -halfDt*(L*u - divSigma/rho[c]);
+            if (ph.solid())
+            {
+                sl.dtA =
+                    -halfDt
+                   *(
+                        u(0)*sl.gA[0] + u(1)*sl.gA[1] + u(2)*sl.gA[2]
+                      + Ac*L
+                    );
+            }
+            else
+            {
+                sl.dtA.setZero();
+            }
+        }
+    }
+}
+
+
+void Foam::demSolver::exchangeCoupled()
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    const vectorField& Cf = mesh_.faceCentres();
+    const vectorField& C = mesh_.cellCentres();
+
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (patchKinds_[patchi] != patchKind::coupled) continue;
+
+        const fvPatch& patch = mesh_.boundary()[patchi];
+        const labelUList& fc = patch.faceCells();
+        scalarList send(fc.size()*nPhases_*nExchange);
+
+        label i = 0;
+        forAll(fc, facei)
+        {
+            faceSides
+            (
+                fc[facei],
+                Cf[patch.start() + facei] - C[fc[facei]],
+                cellFace_
+            );
+            for (label k = 0; k < nPhases_; ++k)
+            {
+                const phaseSide& s = cellFace_[k];
+                send[i++] = s.alpha;
+                send[i++] = s.rho;
+                send[i++] = s.p;
+                send[i++] = s.a;
+                for (int j = 0; j < 3; ++j) send[i++] = s.U(j);
+                for (int j = 0; j < 9; ++j) send[i++] = s.A(j/3, j%3);
+            }
+        }
+
+        const processorPolyPatch& pp =
+            refCast<const processorPolyPatch>(patch.patch());
+        UOPstream toNbr(pp.neighbProcNo(), pBufs);
+        toNbr << send;
+    }
+
+    pBufs.finishedSends();
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (patchKinds_[patchi] != patchKind::coupled) continue;
+        const processorPolyPatch& pp =
+            refCast<const processorPolyPatch>
+            (
+                mesh_.boundary()[patchi].patch()
+            );
+        UIPstream fromNbr(pp.neighbProcNo(), pBufs);
+        fromNbr >> nbrStates_[patchi];
+    }
 }
 
 
@@ -191,9 +553,8 @@ void Foam::demSolver::ghostSides
 (
     const label patchi,
     const label patchFacei,
-    const label celli,
     const cobasis::vector& n,
-    std::vector<phaseSide>& cell,
+    const std::vector<phaseSide>& cell,
     std::vector<phaseSide>& ghost
 ) const
 {
@@ -201,22 +562,8 @@ void Foam::demSolver::ghostSides
 
     for (label k = 0; k < nPhases_; ++k)
     {
-        phaseSide& c = cell[k];
+        const phaseSide& c = cell[k];
         phaseSide& g = ghost[k];
-        cellSide(k, celli, c);
-
-        // Face-centroid velocity of the cell
-        if (reconstructU_)
-        {
-            const vector d
-            (
-                mesh_.Cf().boundaryField()[patchi][patchFacei]
-              - mesh_.C()[celli]
-            );
-            c.U += toEigen(d & gradU_[celli]);
-            c.E = c.E - 0.5*toEigen(phases_.U()[celli]).squaredNorm()
-              + 0.5*c.U.squaredNorm();
-        }
 
         switch (kind)
         {
@@ -228,14 +575,7 @@ void Foam::demSolver::ghostSides
                     cobasis::matrix::Identity() - 2*n*n.transpose()
                 );
                 g = c;
-                if (kind == patchKind::mirror)
-                {
-                    g.U = M*c.U;
-                }
-                else
-                {
-                    g.U = -c.U;
-                }
+                g.U = (kind == patchKind::mirror) ? (M*c.U).eval() : (-c.U).eval();
                 g.A = c.A*M;
                 g.sigma = M*c.sigma*M;
                 break;
@@ -243,52 +583,35 @@ void Foam::demSolver::ghostSides
 
             case patchKind::wedge:
             {
-                const wedgePolyPatch& wpp =
-                    refCast<const wedgePolyPatch>
-                    (
-                        mesh_.boundaryMesh()[patchi]
-                    );
-                const cobasis::matrix T(toEigen(wpp.faceT()));
-                c.U = T*c.U;
-                c.A = c.A*T.transpose();
-                c.sigma = T*c.sigma*T.transpose();
+                // The cell side is already rotated into the face plane
                 g = c;
                 break;
             }
 
             case patchKind::coupled:
             {
-                g.alpha =
-                    phases_.alpha(k).boundaryField()[patchi]
-                   .patchNeighbourField()()[patchFacei];
-                g.rho =
-                    phases_.rho(k).boundaryField()[patchi]
-                   .patchNeighbourField()()[patchFacei];
-                g.p =
-                    phases_.p(k).boundaryField()[patchi]
-                   .patchNeighbourField()()[patchFacei];
-                g.U = toEigen
-                (
-                    phases_.U().boundaryField()[patchi]
-                   .patchNeighbourField()()[patchFacei]
-                );
-                g.A = toEigen
-                (
-                    phases_.A(k).boundaryField()[patchi]
-                   .patchNeighbourField()()[patchFacei]
-                );
+                const scalar* s =
+                    &nbrStates_[patchi][(patchFacei*nPhases_ + k)*nExchange];
+                g.alpha = s[0];
+                g.rho = s[1];
+                g.p = s[2];
+                g.a = s[3];
+                g.U = cobasis::vector(s[4], s[5], s[6]);
+                for (int j = 0; j < 9; ++j) g.A(j/3, j%3) = s[7 + j];
                 completeSide(k, g);
                 break;
             }
 
             default:
             {
+                const hyperelasticPhase& ph = phases_.phase(k);
                 g.alpha = phases_.alpha(k).boundaryField()[patchi][patchFacei];
                 g.rho = phases_.rho(k).boundaryField()[patchi][patchFacei];
                 g.p = phases_.p(k).boundaryField()[patchi][patchFacei];
                 g.U = toEigen(phases_.U().boundaryField()[patchi][patchFacei]);
                 g.A = c.A*std::cbrt(g.rho/c.rho);
                 completeSide(k, g);
+                g.a = std::sqrt(ph.a2Max(g.rho, g.p, g.A));
                 break;
             }
         }
@@ -413,18 +736,68 @@ void Foam::demSolver::addToCell
 
 void Foam::demSolver::addAdvection
 (
-    const label k,
     const label c,
-    const cobasis::vector& v,
     const cobasis::vector& SfOut,
-    const phaseSide& own,
-    const phaseSide& nb
+    const std::vector<phaseSide>& own,
+    const std::vector<phaseSide>& across
 )
 {
-    const double flux = v.dot(SfOut);
-    if (flux < 0 && !nb.trace)
+    for (label k = 0; k < nPhases_; ++k)
     {
-        advection_[k][c] += flux*(nb.A - own.A);
+        if (!phases_.phase(k).solid()) continue;
+
+        const faceContribution& fc = faceResult_[k];
+        const double flux = (fc.vStarSum/fc.vStarWeight).dot(SfOut);
+
+        // Upwind face value; a trace upwind leaves the cell's own value
+        const phaseSide& up = (flux < 0) ? across[k] : own[k];
+        if (up.trace)
+        {
+            continue;
+        }
+
+        cobasis::matrix Ac(toEigen(phases_.A(k)[c]));
+        if (order_ == 2)
+        {
+            Ac += slopes_[k][c].dtA;
+        }
+        advection_[k][c] += flux*(up.A - Ac);
+    }
+}
+
+
+void Foam::demSolver::internalContacts
+(
+    const label c,
+    const cobasis::matrix& R,
+    const scalar magSf
+)
+{
+    // cellFace_ holds the face states of cell c at this face
+    centreSides(c, centre_);
+
+    bool differ = false;
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if (centre_[k].alpha != cellFace_[k].alpha) differ = true;
+    }
+    if (!differ)
+    {
+        return;
+    }
+
+    sideL_ = centre_;
+    sideR_ = cellFace_;
+    solveFace(R);
+
+    // Both sides are cell c: the conservative parts cancel exactly, the
+    // Lagrangian parts remain
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        const faceContribution& fc = faceResult_[k];
+        dAlpha_[k][c] += magSf*(fc.dAlpha[0] + fc.dAlpha[1]);
+        dMomentum_[k][c] += magSf*(fc.dMomentum[0] + fc.dMomentum[1]);
+        dEnergy_[k][c] += magSf*(fc.dEnergy[0] + fc.dEnergy[1]);
     }
 }
 
@@ -434,11 +807,6 @@ void Foam::demSolver::addAdvection
 void Foam::demSolver::prepare()
 {
     phases_.correctBoundaryConditions();
-
-    if (reconstructU_)
-    {
-        gradU_ = fvc::grad(phases_.U())().primitiveField();
-    }
 
     const label nCells = mesh_.nCells();
     const vectorField& U = phases_.U().primitiveField();
@@ -487,7 +855,7 @@ Foam::scalar Foam::demSolver::stableDeltaT() const
     scalarField sumLambda(nCells, 0);
     forAll(nei, facei)
     {
-        const scalar magS = mag(Sf[facei]);
+        const scalar magS = magSf_[facei];
         const scalar lambda = max
         (
             mag(U[own[facei]] & Sf[facei]) + aMax[own[facei]]*magS,
@@ -531,10 +899,19 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
     const vectorField& Sf = mesh_.faceAreas();
-    const scalarField& magSf = magSf_;
     const vectorField& Cf = mesh_.faceCentres();
     const vectorField& C = mesh_.cellCentres();
     const vectorField& U = phases_.U().primitiveField();
+
+    if (order_ == 2)
+    {
+        computeSlopes(dt);
+    }
+    else if (reconstructU_)
+    {
+        gradU_ = fvc::grad(phases_.U())().primitiveField();
+    }
+    exchangeCoupled();
 
     for (label k = 0; k < nPhases_; ++k)
     {
@@ -549,52 +926,42 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
         }
     }
 
+    std::vector<phaseSide> faceO(nPhases_), faceN(nPhases_);
+
     // Internal faces
     forAll(nei, facei)
     {
         const label o = own[facei];
         const label nb = nei[facei];
 
-        for (label k = 0; k < nPhases_; ++k)
-        {
-            cellSide(k, o, sideL_[k]);
-            cellSide(k, nb, sideR_[k]);
-        }
-        if (reconstructU_)
-        {
-            const cobasis::vector dUL(toEigen((Cf[facei] - C[o]) & gradU_[o]));
-            const cobasis::vector dUR(toEigen((Cf[facei] - C[nb]) & gradU_[nb]));
-            const cobasis::vector UL(toEigen(U[o]) + dUL);
-            const cobasis::vector UR(toEigen(U[nb]) + dUR);
-            const double keL = 0.5*(UL.squaredNorm() - magSqr(U[o]));
-            const double keR = 0.5*(UR.squaredNorm() - magSqr(U[nb]));
-            for (label k = 0; k < nPhases_; ++k)
-            {
-                sideL_[k].U = UL;
-                sideL_[k].E += keL;
-                sideR_[k].U = UR;
-                sideR_[k].E += keR;
-            }
-        }
+        faceSides(o, Cf[facei] - C[o], faceO);
+        faceSides(nb, Cf[facei] - C[nb], faceN);
 
+        sideL_ = faceO;
+        sideR_ = faceN;
         solveFace(frames_[facei]);
 
         const cobasis::vector S(toEigen(Sf[facei]));
-        addToCell(o, 0, magSf[facei], S);
-        addToCell(nb, 1, magSf[facei], -S);
+        addToCell(o, 0, magSf_[facei], S);
+        addToCell(nb, 1, magSf_[facei], -S);
+        addAdvection(o, S, faceO, faceN);
+        addAdvection(nb, -S, faceN, faceO);
 
-        for (label k = 0; k < nPhases_; ++k)
+        if (order_ == 2)
         {
-            if (!phases_.phase(k).solid()) continue;
-            const faceContribution& fc = faceResult_[k];
-            const cobasis::vector v(fc.vStarSum/fc.vStarWeight);
-            addAdvection(k, o, v, S, sideL_[k], sideR_[k]);
-            addAdvection(k, nb, v, -S, sideR_[k], sideL_[k]);
+            cellFace_ = faceO;
+            internalContacts(o, frames_[facei], magSf_[facei]);
+            cellFace_ = faceN;
+            internalContacts
+            (
+                nb,
+                faceFrame::rotation(-S/magSf_[facei]),
+                magSf_[facei]
+            );
         }
     }
 
     // Boundary faces
-    std::vector<phaseSide> cellStates(nPhases_), ghostStates(nPhases_);
     forAll(mesh_.boundary(), patchi)
     {
         const patchKind kind = patchKinds_[patchi];
@@ -609,41 +976,62 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
         const bool cellIsLeft =
             kind != patchKind::coupled || coupledLeft_[patchi];
 
+        cobasis::matrix T(cobasis::matrix::Identity());
+        if (kind == patchKind::wedge)
+        {
+            T = toEigen
+            (
+                refCast<const wedgePolyPatch>(patch.patch()).faceT()
+            );
+        }
+
         forAll(fc, i)
         {
             const label facei = start + i;
             const label celli = fc[i];
             const cobasis::vector S(toEigen(Sf[facei]));
-            const cobasis::vector n(S/magSf[facei]);
+            const cobasis::vector n(S/magSf_[facei]);
 
-            ghostSides(patchi, i, celli, n, cellStates, ghostStates);
+            faceSides(celli, Cf[facei] - C[celli], cellFace_);
+
+            if (order_ == 2)
+            {
+                faceO = cellFace_;
+                internalContacts(celli, frames_[facei], magSf_[facei]);
+                cellFace_ = faceO;
+            }
+
+            if (kind == patchKind::wedge)
+            {
+                // Both sides: the cell state rotated by half the wedge
+                // angle into the face plane (NUMERICS.md section 7)
+                for (label k = 0; k < nPhases_; ++k)
+                {
+                    phaseSide& s = cellFace_[k];
+                    s.U = T*s.U;
+                    s.A = s.A*T.transpose();
+                    s.sigma = T*s.sigma*T.transpose();
+                }
+            }
+
+            ghostSides(patchi, i, n, cellFace_, ghost_);
 
             if (cellIsLeft)
             {
-                sideL_ = cellStates;
-                sideR_ = ghostStates;
+                sideL_ = cellFace_;
+                sideR_ = ghost_;
                 solveFace(frames_[facei]);
             }
             else
             {
                 // Same orientation as on the neighbouring processor
-                sideL_ = ghostStates;
-                sideR_ = cellStates;
+                sideL_ = ghost_;
+                sideR_ = cellFace_;
                 solveFace(faceFrame::rotation(-n));
             }
 
-            addToCell(celli, cellIsLeft ? 0 : 1, magSf[facei], S);
-
-            for (label k = 0; k < nPhases_; ++k)
-            {
-                if (!phases_.phase(k).solid()) continue;
-                const faceContribution& fr = faceResult_[k];
-                addAdvection
-                (
-                    k, celli, fr.vStarSum/fr.vStarWeight, S,
-                    cellStates[k], ghostStates[k]
-                );
-            }
+            addToCell(celli, cellIsLeft ? 0 : 1, magSf_[facei], S);
+            addAdvection(celli, S, cellFace_, ghost_);
         }
     }
 
@@ -680,8 +1068,14 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
             const cobasis::matrix Ac(toEigen(A[c]));
             if (solid)
             {
+                // Time-centred cobasis in the stretching term
+                cobasis::matrix Ahalf(Ac);
+                if (order_ == 2)
+                {
+                    Ahalf += slopes_[k][c].dtA;
+                }
                 q.A[k][c] =
-                    Ac - dtByV*(advection_[k][c] + Ac*L_[k][c]);
+                    Ac - dtByV*advection_[k][c] - dt*(Ahalf*L_[k][c])/V[c];
             }
             else
             {
