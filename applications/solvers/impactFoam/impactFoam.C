@@ -15,8 +15,9 @@ Description
 
     Dictionaries: constant/phaseProperties (phases and their models),
     system/fvSchemes discreteEquations { riemannSolver HLLC; } and
-    gradSchemes grad(U) (velocity reconstruction), system/controlDict maxCo
-    (default 0.4) and maxDeltaT; constant/g (optional gravity).
+    gradSchemes (limited gradients), system/controlDict maxCo (default 0.4)
+    and maxDeltaT; optional constant/g (gravity) and constant/bodyAccelerations
+    (e.g. the centripetal acceleration of a rigid rotation).
 
 \*---------------------------------------------------------------------------*/
 
@@ -25,6 +26,7 @@ Description
 #include "demSolver.H"
 #include "mechanicalRelaxation.H"
 #include "uniformDimensionedFields.H"
+#include "bodyAcceleration.H"
 
 int main(int argc, char *argv[])
 {

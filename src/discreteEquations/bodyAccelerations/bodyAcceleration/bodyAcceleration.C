@@ -1,0 +1,40 @@
+#include "bodyAcceleration.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(bodyAcceleration, 0);
+    defineRunTimeSelectionTable(bodyAcceleration, dictionary);
+}
+
+Foam::bodyAcceleration::bodyAcceleration
+(
+    const word& name,
+    const dictionary& dict
+)
+:
+    name_(name)
+{}
+
+
+Foam::autoPtr<Foam::bodyAcceleration> Foam::bodyAcceleration::New
+(
+    const word& name,
+    const dictionary& dict
+)
+{
+    const word modelType(dict.get<word>("type"));
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown bodyAcceleration type " << modelType
+            << " for " << name << nl << nl
+            << "Valid types are :" << nl
+            << dictionaryConstructorTablePtr_->sortedToc()
+            << exit(FatalIOError);
+    }
+
+    return cstrIter()(name, dict);
+}
