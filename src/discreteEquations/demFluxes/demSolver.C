@@ -866,7 +866,13 @@ Foam::scalar Foam::demSolver::stableDeltaT() const
     }
     forAll(mesh_.boundary(), patchi)
     {
-        if (patchKinds_[patchi] == patchKind::empty)
+        // No wave crosses an empty or a wedge face (axisymmetry): counting
+        // the wedge faces would cut the step by the wedge angle near the axis
+        if
+        (
+            patchKinds_[patchi] == patchKind::empty
+         || patchKinds_[patchi] == patchKind::wedge
+        )
         {
             continue;
         }
