@@ -1,0 +1,381 @@
+#!/usr/bin/python3
+"""V9 (VALIDATION.md, NUMERICS.md 8): bad input and unphysical runs.
+
+Base case: tests/cases/badInput/copperAir, a valid 1-D case (50 cells,
+3 steps): a copper slab (solid, separable a = 1/2, mu 4.5e10, Von Mises
+sigmaY 3e8) at x < 0.5 in contact with air, each phase with a trace of
+1e-8 of the other. Each variant copies it, runs blockMesh and setFields
+on the valid input, breaks one thing, and runs impactFoam.
+
+Bad input (each must stop at start-up): impactFoam exits non-zero, the log
+holds 'FOAM FATAL' (ERROR or IO ERROR) and the fatal message names the
+problem (the keywords below, searched in the text after 'FOAM FATAL'), no
+time directory other than 0 is written, and no file of the case's time
+directories holds a NaN.
+
+    a07           elasticity a 0.7 (hyperbolic only for a in [-1, 1/2])
+    negativeMu    elasticity mu -4.5e10
+    zeroSigmaY    vonMises sigmaY 0
+    negSigmaY     vonMises sigmaY -3e8
+    unknownPhase  an extra 0/alpha.steel with phases (copper air)
+    alphaSum      alpha.copper = alpha.air = 0.6 everywhere
+    missingField  no 0/rho.air
+    unknownEoS    equationOfState type vanDerWaals
+    badPhaseType  phase type liquid (only solid | fluid)
+The valid base case must run to its end time (control).
+
+Unphysical runs (must stop during the run with a FatalError whose message
+says 'unphysical state' and names the phase, the cell, the time and the
+offending value, after writing the last good fields: the time directory
+named in the message exists, is earlier than the failure time, is the
+latest one, and holds finite fields with rho > 0 and p > -pInf for every
+phase):
+    copperLeavesAir   the copper slab moves away from the air at 5000 m/s
+                      (faster than the air's escape speed 2c/(gamma - 1)
+                      = 1710 m/s): the gap is a vacuum and the air's
+                      pressure goes negative.
+    separation        copper at -5000 m/s, air at +5000 m/s, traces 1e-6
+                      (at the default trace threshold alphaTrace 1e-6, so
+                      both phases stay active in every cell).
+"""
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "lib"))
+import foamcase as fc                         # noqa: E402
+from checks import Checks                     # noqa: E402
+
+BASE = os.path.join(HERE, "badInput", "copperAir")
+PHASES = ("copper", "air")
+P_INF = {"copper": 3.42e10, "air": 0.0}
+RUN_TIMEOUT = 120
+
+checks = Checks()
+
+
+# --------------------------------------------------------------------------
+# Editing the copied case
+# --------------------------------------------------------------------------
+
+def edit(case, rel, old, new, count=1):
+    """Replace old by new (count times) in case/rel; the text must be
+    there."""
+    path = os.path.join(case, rel)
+    with open(path) as f:
+        text = f.read()
+    if text.count(old) < count:
+        raise fc.FoamError("%s: '%s' not found" % (path, old))
+    with open(path, "w") as f:
+        f.write(text.replace(old, new, count))
+
+
+def set_uniform(case, field, value):
+    """Set the internalField of 0/<field> to uniform value."""
+    path = os.path.join(case, "0", field)
+    with open(path) as f:
+        text = f.read()
+    new, n = re.subn(r"internalField\s+[^;]*;",
+                     "internalField   uniform %s;" % value, text, count=1)
+    if n != 1:
+        raise fc.FoamError("%s: no internalField" % path)
+    with open(path, "w") as f:
+        f.write(new)
+
+
+def copy_field(case, src, dst):
+    with open(os.path.join(case, "0", src)) as f:
+        text = f.read()
+    text = re.sub(r"(object\s+)%s;" % re.escape(src), r"\g<1>%s;" % dst,
+                  text)
+    with open(os.path.join(case, "0", dst), "w") as f:
+        f.write(text)
+
+
+PP = "constant/phaseProperties"
+
+# name: (modification of the prepared case, keyword patterns, description)
+BAD_INPUT = [
+    ("a07",
+     lambda c: edit(c, PP, "a 0.5;", "a 0.7;"),
+     [r"\ba\s*=\s*0\.7|\[-1, 1/2\]"], "a = 0.7"),
+    ("negativeMu",
+     lambda c: edit(c, PP, "mu 4.5e10;", "mu -4.5e10;"),
+     [r"\bmu\b"], "mu = -4.5e10"),
+    ("zeroSigmaY",
+     lambda c: edit(c, PP, "sigmaY 3e8;", "sigmaY 0;"),
+     [r"sigmaY"], "sigmaY = 0"),
+    ("negSigmaY",
+     lambda c: edit(c, PP, "sigmaY 3e8;", "sigmaY -3e8;"),
+     [r"sigmaY"], "sigmaY = -3e8"),
+    ("unknownPhase",
+     lambda c: copy_field(c, "alpha.air", "alpha.steel"),
+     [r"steel"], "extra 0/alpha.steel"),
+    ("alphaSum",
+     lambda c: (set_uniform(c, "alpha.copper", 0.6),
+                set_uniform(c, "alpha.air", 0.6)),
+     [r"\bsum"], "alphas 0.6 + 0.6"),
+    ("missingField",
+     lambda c: os.remove(os.path.join(c, "0", "rho.air")),
+     [r"rho\.air"], "no 0/rho.air"),
+    ("unknownEoS",
+     lambda c: edit(c, PP, "type stiffenedGas; gamma 1.4;",
+                    "type vanDerWaals; gamma 1.4;"),
+     [r"vanDerWaals"], "equationOfState type vanDerWaals"),
+    ("badPhaseType",
+     lambda c: edit(c, PP, "type            fluid;",
+                    "type            liquid;"),
+     [r"liquid"], "phase type liquid"),
+]
+
+
+def set_velocities(u_copper, u_air):
+    def modify(case):
+        edit(case, "system/setFieldsDict",
+             "volVectorFieldValue U               (0 0 0)",
+             "volVectorFieldValue U               (%g 0 0)" % u_air)
+        edit(case, "system/setFieldsDict",
+             "volVectorFieldValue U               (10 0 0)",
+             "volVectorFieldValue U               (%g 0 0)" % u_copper)
+        fc.set_entry(case, "system/controlDict", "endTime", "2e-4")
+        fc.set_entry(case, "system/controlDict", "writeInterval", "1e-5")
+    return modify
+
+
+def traces(value):
+    def modify(case):
+        edit(case, "system/setFieldsDict", "1e-8", "%g" % value, count=2)
+        edit(case, "system/setFieldsDict", "0.99999999", "%.10g"
+             % (1 - value), count=2)
+    return modify
+
+
+# name: (modifications before setFields, description)
+UNPHYSICAL = [
+    ("copperLeavesAir", [set_velocities(-5000.0, 0.0)],
+     "copper at -5000 m/s leaving air at rest"),
+    ("separation", [set_velocities(-5000.0, 5000.0), traces(1e-6)],
+     "copper at -5000 m/s, air at +5000 m/s, traces 1e-6"),
+]
+
+
+# --------------------------------------------------------------------------
+# Running and inspecting
+# --------------------------------------------------------------------------
+
+def prepare(name, before_setfields=()):
+    """Copy the base case to run/V9_<name>, apply the modifications that
+    act on the set-up dictionaries, run blockMesh and setFields."""
+    case = fc.copy_tutorial(BASE, "V9_" + name)
+    for modify in before_setfields:
+        modify(case)
+    fc.run(case, ["blockMesh"])
+    shutil.copytree(os.path.join(case, "0.orig"), os.path.join(case, "0"))
+    fc.run(case, ["setFields"])
+    return case
+
+
+def run_impactfoam(case):
+    """impactFoam in case; returns (exit code or None on timeout, log)."""
+    logpath = os.path.join(case, "log.impactFoam")
+    env = dict(os.environ)
+    env["PWD"] = os.path.abspath(case)
+    with open(logpath, "w") as logf:
+        try:
+            proc = subprocess.run(["impactFoam"], cwd=case, stdout=logf,
+                                  stderr=subprocess.STDOUT, env=env,
+                                  timeout=RUN_TIMEOUT)
+            code = proc.returncode
+        except subprocess.TimeoutExpired:
+            code = None
+    with open(logpath, errors="replace") as f:
+        return code, f.read()
+
+
+def fatal_message(log):
+    """Text from the first 'FOAM FATAL' line on ('' if none)."""
+    i = log.find("FOAM FATAL")
+    return log[i:] if i >= 0 else ""
+
+
+def one_line(text, n=3):
+    lines = [l.strip() for l in text.splitlines() if l.strip()
+             and not l.strip().startswith("-->")]
+    return " | ".join(lines[:n])
+
+
+_NAN = re.compile(r"(?<![\w.])[-+]?(nan|inf)(?![\w.])", re.I)
+
+
+def files_with_nan(case):
+    """Files of the case's time directories holding a nan or inf token."""
+    bad = []
+    for _, name in fc.time_dirs(case):
+        d = os.path.join(case, name)
+        for root, _, files in os.walk(d):
+            for fn in files:
+                path = os.path.join(root, fn)
+                try:
+                    with open(path, errors="replace") as f:
+                        text = fc.strip_comments(f.read())
+                except OSError:
+                    continue
+                if _NAN.search(text):
+                    bad.append(os.path.relpath(path, case))
+    return bad
+
+
+def check_bad_input(name, modify, patterns, what):
+    tag = "V9_" + name
+    try:
+        case = prepare(name)
+        modify(case)
+    except (fc.FoamError, OSError) as e:
+        checks.fail(tag, "could not set up the case: %s"
+                    % getattr(e, "summary", e))
+        return
+    code, log = run_impactfoam(case)
+    msg = fatal_message(log)
+    missing = [p for p in patterns if not re.search(p, msg)]
+    times = [n for _, n in fc.time_dirs(case)]
+    nan = files_with_nan(case)
+    problems = []
+    if code is None:
+        problems.append("timed out")
+    elif code == 0:
+        problems.append("exit code 0")
+    if not msg:
+        problems.append("no FOAM FATAL in the log")
+    elif missing:
+        problems.append("fatal message does not match %s" % missing)
+    if times != ["0"]:
+        problems.append("time directories written: %s" % " ".join(times))
+    if nan:
+        problems.append("NaN/Inf in %s" % " ".join(nan))
+    summary = one_line(msg) if msg else fc.log_summary(log)
+    checks.check(tag, not problems,
+                 "%s: exit code %s; %s%s"
+                 % (what, code, summary,
+                    ("; PROBLEMS: " + "; ".join(problems)) if problems
+                    else ""))
+
+
+def check_control():
+    tag = "V9_control"
+    try:
+        case = prepare("control")
+    except fc.FoamError as e:
+        checks.fail(tag, e.summary)
+        return
+    code, log = run_impactfoam(case)
+    end = float(fc.get_entry(case, "system/controlDict", "endTime"))
+    times = [t for t, _ in fc.time_dirs(case)]
+    ok = code == 0 and "FOAM FATAL" not in log and times \
+        and abs(times[-1] - end) <= 1e-9 * end and not files_with_nan(case)
+    checks.check(tag, ok, "valid base case: exit code %s, time directories "
+                 "%s (end time %g)" % (code, " ".join("%g" % t
+                                                      for t in times), end))
+
+
+_NUM = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+
+
+def check_unphysical(name, modifications, what):
+    tag = "V9_unphysical_" + name
+    try:
+        case = prepare("unphysical_" + name, modifications)
+    except (fc.FoamError, OSError) as e:
+        checks.fail(tag, "could not set up the case: %s"
+                    % getattr(e, "summary", e))
+        return
+    code, log = run_impactfoam(case)
+    msg = fatal_message(log)
+    head = msg.split("From function")[0]
+    problems = []
+    if code is None:
+        problems.append("timed out")
+    elif code == 0:
+        problems.append("exit code 0 (the run did not stop)")
+    if not msg:
+        problems.append("no FOAM FATAL in the log")
+    if not re.search(r"unphysical state", head, re.I):
+        problems.append("message does not say 'unphysical state'")
+    m_phase = re.search(r"phase\s+(%s)\b" % "|".join(PHASES), head)
+    m_cell = re.search(r"cell\s+(\d+)", head)
+    m_time = re.search(r"time\s+(%s)" % _NUM, head)
+    m_value = re.search(r"([A-Za-z][\w().]*)\s*=\s*(%s)" % _NUM, head)
+    for m, item in ((m_phase, "phase"), (m_cell, "cell"), (m_time, "time"),
+                    (m_value, "value")):
+        if m is None:
+            problems.append("message names no %s" % item)
+    m_good = re.search(r"last good fields were written at time\s+(%s)"
+                       % _NUM, head)
+    good_info = ""
+    if m_good is None:
+        problems.append("message names no time of the last good fields")
+    else:
+        t_good = float(m_good.group(1))
+        times = fc.time_dirs(case)
+        try:
+            good = fc.find_time(case, t_good)
+        except fc.FoamError as e:
+            good = None
+            problems.append(str(e))
+        if good is not None:
+            if times[-1][1] != good:
+                problems.append("a later time directory %s exists"
+                                % times[-1][1])
+            if m_time and not t_good < float(m_time.group(1)):
+                problems.append("last good time %g not before the failure "
+                                "time %s" % (t_good, m_time.group(1)))
+            nan = files_with_nan(case)
+            if nan:
+                problems.append("NaN/Inf in %s" % " ".join(nan))
+            try:
+                mins = []
+                for ph in PHASES:
+                    rho = fc.read_field(case, good, "rho." + ph)
+                    p = fc.read_field(case, good, "p." + ph)
+                    mins.append("%s: min rho %.3g, min p %.4g"
+                                % (ph, rho.min(), p.min()))
+                    if not (np.all(np.isfinite(rho)) and rho.min() > 0
+                            and np.all(np.isfinite(p))
+                            and p.min() > -P_INF[ph]):
+                        problems.append("last good fields of %s are not "
+                                        "physical (%s)" % (ph, mins[-1]))
+                good_info = "last good fields at %s (%s)" % (good,
+                                                              "; ".join(mins))
+            except fc.FoamError as e:
+                problems.append("cannot read the last good fields: %s"
+                                % e.summary)
+    summary = one_line(head, 2) if head else fc.log_summary(log)
+    checks.check(tag, not problems,
+                 "%s: exit code %s; %s%s%s"
+                 % (what, code, summary,
+                    ("; " + good_info) if good_info else "",
+                    ("; PROBLEMS: " + "; ".join(problems)) if problems
+                    else ""))
+
+
+def main():
+    missing = fc.require_apps("impactFoam", "blockMesh", "setFields")
+    if missing:
+        checks.fail("V9_run", "%s not found on PATH (impactFoam not built "
+                    "or environment not sourced: . etc/bashrc)"
+                    % " ".join(missing))
+        checks.exit()
+    check_control()
+    for name, modify, patterns, what in BAD_INPUT:
+        check_bad_input(name, modify, patterns, what)
+    for name, modifications, what in UNPHYSICAL:
+        check_unphysical(name, modifications, what)
+    checks.exit()
+
+
+if __name__ == "__main__":
+    main()
