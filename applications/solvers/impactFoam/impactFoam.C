@@ -50,7 +50,13 @@ int main(int argc, char *argv[])
         const scalar dtStable = dem.stableDeltaT();
         scalar dt = min(maxCo*dtStable, maxDeltaT);
         dt = min(dt, runTime.endTime().value() - runTime.value());
+        // Let OpenFOAM shorten the step to meet the next write time, but
+        // never lengthen it past maxCo
         runTime.setDeltaT(dt);
+        if (runTime.deltaTValue() > dt)
+        {
+            runTime.setDeltaT(dt, false);
+        }
         dt = runTime.deltaTValue();
 
         const scalar oldTime = runTime.value();

@@ -181,6 +181,7 @@ void Foam::demSolver::completeSide(const label k, phaseSide& s) const
     const hyperelasticPhase& ph = phases_.phase(k);
     s.solid = ph.solid();
     s.trace = s.alpha < phases_.alphaTrace();
+    s.minor = s.alpha < phases_.alphaMinor();
     s.cT = std::sqrt(ph.cT2());
     s.sigma = ph.sigma(s.p, s.A);
     s.E = ph.e(s.rho, s.p, s.A) + 0.5*s.U.squaredNorm();
@@ -211,6 +212,7 @@ void Foam::demSolver::centreSides
             const hyperelasticPhase& ph = phases_.phase(k);
             sk.solid = ph.solid();
             sk.trace = sk.alpha < phases_.alphaTrace();
+            sk.minor = sk.alpha < phases_.alphaMinor();
             sk.cT = std::sqrt(ph.cT2());
             sk.sigma = sigma_[k][celli];
             sk.E = E_[k][celli];
@@ -281,6 +283,7 @@ void Foam::demSolver::faceSides
             sk.cT = std::sqrt(ph.cT2());
             sk.solid = ph.solid();
             sk.trace = sk.alpha < phases_.alphaTrace();
+            sk.minor = sk.alpha < phases_.alphaMinor();
         }
         return;
     }
@@ -374,7 +377,7 @@ void Foam::demSolver::computeSlopes(const scalar dt)
         const scalarField& p = phases_.p(k).primitiveField();
         const volTensorField& A = phases_.A(k);
 
-        // Minor-phase rule: below 1e-3 in the cell or any neighbour
+        // Minor-phase rule: below alphaMinor in the cell or any neighbour
         minAlpha = alpha.primitiveField();
         forAll(nei, facei)
         {
@@ -416,7 +419,7 @@ void Foam::demSolver::computeSlopes(const scalar dt)
 
             sl.gAlpha = toEigen(gAlpha[c]);
             sl.dtAlpha = -halfDt*u.dot(sl.gAlpha);
-            sl.minor = minAlpha[c] < 1e-3;
+            sl.minor = minAlpha[c] < phases_.alphaMinor();
 
             if (sl.minor)
             {
@@ -638,6 +641,14 @@ void Foam::demSolver::solveFace(const cobasis::matrix& R)
 
     const cobasis::vector n(R.row(0).transpose());
 
+    // Pairs between two minor states (alpha < alphaMinor) are carried with
+    // the face's contact velocity after the other pairs are solved: their
+    // own waves (a trace of hot gas has a sound speed of tens of km/s) are
+    // not resolved by the time step, and solving them would empty the
+    // minor phase faster than it holds mass
+    minorPairs_.clear();
+    double uFace = 0, wFace = 0;
+
     contactFractions::forAllPairs
     (
         nPhases_, alphaL, alphaR,
@@ -645,6 +656,12 @@ void Foam::demSolver::solveFace(const cobasis::matrix& R)
         {
             const phaseSide& sl = sideL_[k];
             const phaseSide& sr = sideR_[j];
+
+            if (sl.minor && sr.minor)
+            {
+                minorPairs_.push_back({k, j, S});
+                return;
+            }
 
             riemannState L, Rs;
             L.rho = sl.rho;
@@ -664,6 +681,9 @@ void Foam::demSolver::solveFace(const cobasis::matrix& R)
             Rs.solid = sr.solid;
 
             const riemannSolution sol = HLLC::solve(L, Rs);
+
+            uFace += S*sol.uStar;
+            wFace += S;
 
             // One rule for both parts, including u* = 0
             const bool fromLeft = (sol.uStar >= 0);
@@ -708,6 +728,49 @@ void Foam::demSolver::solveFace(const cobasis::matrix& R)
             faceResult_[j].vStarWeight += S;
         }
     );
+
+    if (minorPairs_.empty())
+    {
+        return;
+    }
+
+    // Minor pairs: upwind transport at the contact velocity of the face
+    // (the mean normal velocity of the sides where no pair was solved)
+    if (wFace > 0)
+    {
+        uFace /= wFace;
+    }
+    else
+    {
+        uFace = 0.5*(sideL_[0].U + sideR_[0].U).dot(n);
+    }
+
+    for (const minorPair& tp : minorPairs_)
+    {
+        const bool fromLeft = (uFace >= 0);
+        const int up = fromLeft ? tp.k : tp.j;
+        const phaseSide& K = fromLeft ? sideL_[tp.k] : sideR_[tp.j];
+        const cobasis::vector s(K.sigma*n);
+        const double S = tp.S;
+
+        const double massFlux = K.rho*uFace;
+        const cobasis::vector momFlux(massFlux*K.U - s);
+        const double energyFlux = massFlux*K.E - s.dot(K.U);
+
+        faceResult_[up].dMass[0] -= S*massFlux;
+        faceResult_[up].dMass[1] += S*massFlux;
+        faceResult_[up].dMomentum[0] -= S*momFlux;
+        faceResult_[up].dMomentum[1] += S*momFlux;
+        faceResult_[up].dEnergy[0] -= S*energyFlux;
+        faceResult_[up].dEnergy[1] += S*energyFlux;
+
+        const phaseSide& sl = sideL_[tp.k];
+        const phaseSide& sr = sideR_[tp.j];
+        faceResult_[tp.k].vStarSum += S*(sl.U + (uFace - sl.U.dot(n))*n);
+        faceResult_[tp.k].vStarWeight += S;
+        faceResult_[tp.j].vStarSum += S*(sr.U + (uFace - sr.U.dot(n))*n);
+        faceResult_[tp.j].vStarWeight += S;
+    }
 }
 
 
@@ -838,14 +901,14 @@ Foam::scalar Foam::demSolver::stableDeltaT() const
     const vectorField& Sf = mesh_.faceAreas();
     const vectorField& U = phases_.U().primitiveField();
 
-    // Largest longitudinal speed among the phases with alpha > 1e-3
+    // Largest longitudinal speed among the phases above alphaMinor
     scalarField aMax(nCells, 0);
     for (label k = 0; k < nPhases_; ++k)
     {
         const scalarField& alpha = phases_.alpha(k).primitiveField();
         for (label celli = 0; celli < nCells; ++celli)
         {
-            if (alpha[celli] > 1e-3)
+            if (alpha[celli] >= phases_.alphaMinor())
             {
                 aMax[celli] = max(aMax[celli], a_[k][celli]);
             }

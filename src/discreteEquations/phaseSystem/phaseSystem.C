@@ -152,6 +152,7 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
     phaseNames_(dict_.get<wordList>("phases")),
     alphaMin_(dict_.getOrDefault<scalar>("alphaMin", 1e-8)),
     alphaTrace_(dict_.getOrDefault<scalar>("alphaTrace", 1e-6)),
+    alphaMinor_(dict_.getOrDefault<scalar>("alphaMinor", 1e-3)),
     U_
     (
         IOobject
@@ -225,11 +226,18 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
             << "No phases listed in " << dict_.objectPath()
             << exit(FatalIOError);
     }
-    if (!(alphaMin_ > 0 && alphaMin_ < alphaTrace_ && alphaTrace_ < 1e-3))
+    if
+    (
+        !(
+            alphaMin_ > 0 && alphaMin_ < alphaTrace_
+         && alphaTrace_ <= alphaMinor_ && alphaMinor_ < 0.5
+        )
+    )
     {
         FatalIOErrorInFunction(dict_)
             << "Need 0 < alphaMin (" << alphaMin_ << ") < alphaTrace ("
-            << alphaTrace_ << ") < 1e-3" << exit(FatalIOError);
+            << alphaTrace_ << ") <= alphaMinor (" << alphaMinor_
+            << ") < 0.5" << exit(FatalIOError);
     }
 
     checkFieldNames();

@@ -27,27 +27,31 @@ Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
 {}
 
 
-Foam::scalar Foam::mechanicalRelaxation::interfacePressure
+bool Foam::mechanicalRelaxation::interfacePressure
 (
-    const label celli,
-    const scalar volume
+    const scalar volume,
+    scalar& p
 ) const
 {
     // F(p) = sum m_k v_k(p) - volume decreases from +inf at the largest
-    // pMin to sum alpha_k (gamma-1)/gamma - volume < 0
+    // pMin (every active phase is admissible there) to
+    // sum alpha_k (gamma-1)/gamma - volume < 0: one root
     scalar lo = -GREAT;
+    scalar pScale = 0;
     scalar pGuess = 0, wGuess = 0;
     for (label k = 0; k < nPhases_; ++k)
     {
         if (trace_[k]) continue;
         const equationOfState& eos = phases_.phase(k).eos();
+        const scalar pk = eos.p(1/v0_[k], eh0_[k]);
         lo = max(lo, eos.pMin());
-        pGuess += alpha_[k]*eos.p(1/v0_[k], eh0_[k]);
+        pScale = max(pScale, eos.pScale(pk));
+        pGuess += alpha_[k]*pk;
         wGuess += alpha_[k];
     }
     scalar hi = GREAT;
 
-    const auto F = [&](const scalar p, scalar& dF)
+    const auto F = [&](const scalar pp, scalar& dF)
     {
         scalar f = -volume;
         dF = 0;
@@ -55,16 +59,16 @@ Foam::scalar Foam::mechanicalRelaxation::interfacePressure
         {
             if (trace_[k]) continue;
             const equationOfState& eos = phases_.phase(k).eos();
-            f += m_[k]*eos.vRelaxed(p, 1/v0_[k], eh0_[k]);
-            dF += m_[k]*eos.dvRelaxeddp(p, 1/v0_[k], eh0_[k]);
+            f += m_[k]*eos.vRelaxed(pp, 1/v0_[k], eh0_[k]);
+            dF += m_[k]*eos.dvRelaxeddp(pp, 1/v0_[k], eh0_[k]);
         }
         return f;
     };
 
-    scalar p = pGuess/wGuess;
-    if (!(p > lo)) p = lo + max(mag(lo), scalar(1))*1e-3;
+    p = pGuess/wGuess;
+    if (!(p > lo)) p = lo + 1e-6*max(pScale, scalar(1));
 
-    for (int iter = 0; iter < 200; ++iter)
+    for (int iter = 0; iter < 300; ++iter)
     {
         scalar dF;
         const scalar f = F(p, dF);
@@ -74,19 +78,19 @@ Foam::scalar Foam::mechanicalRelaxation::interfacePressure
         if (!(pNew > lo && pNew < hi))
         {
             // Bisect, or expand when no upper bound is known yet
-            pNew = (hi < GREAT) ? 0.5*(lo + hi) : p + 2*max(mag(p - lo), scalar(1));
+            pNew =
+                (hi < GREAT)
+              ? 0.5*(lo + hi)
+              : p + 2*max(mag(p - lo), scalar(1));
         }
-        if (mag(pNew - p) <= 1e-15*(mag(pNew) + mag(lo)) || f == 0)
+        if (f == 0 || mag(pNew - p) <= 1e-15*(mag(pNew) + pScale))
         {
-            return pNew;
+            p = pNew;
+            return true;
         }
         p = pNew;
     }
-
-    FatalErrorInFunction
-        << "Pressure relaxation did not converge in cell " << celli
-        << " (bracket " << lo << " " << hi << ")" << exit(FatalError);
-    return p;
+    return false;
 }
 
 
@@ -144,11 +148,12 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
 
             if (!(q.mass[k][c] > 0))
             {
-                if (!trace_[k])
+                if (!(alpha_[k] < phases_.alphaMinor()))
                 {
                     fail(c, k, "mass", q.mass[k][c]);
                 }
-                // A trace that lost all its mass keeps its last density
+                // A minor phase that lost all its mass keeps its last
+                // density (the mass this adds is below alphaMinor rho)
                 q.mass[k][c] = alpha_[k]*phases_.rho(k)[c];
             }
             m_[k] = q.mass[k][c];
@@ -185,6 +190,30 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
               + 0.5*(uk - u).squaredNorm() - ph.elasticEnergy(A);
         }
 
+        // A minor phase whose energy the step left inadmissible (a gas
+        // with e <= 0, say) is reset as a trace; any other phase fails
+        for (label k = 0; k < nPhases_; ++k)
+        {
+            if (trace_[k]) continue;
+            const equationOfState& eos = phases_.phase(k).eos();
+            const scalar pk = eos.p(1/v0_[k], eh0_[k]);
+            if (!(pk > eos.pMin()))
+            {
+                if (alpha_[k] < phases_.alphaMinor())
+                {
+                    trace_[k] = true;
+                }
+                else
+                {
+                    fail(c, k, "p", pk);
+                }
+            }
+        }
+        if (err.failed && err.cell == c)
+        {
+            continue;
+        }
+
         // 3. Pressure relaxation among the phases that are not traces
         label nActive = 0;
         scalar traceVolume = 0;
@@ -197,7 +226,11 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
         scalar pStar;
         if (nActive > 1)
         {
-            pStar = interfacePressure(c, 1 - traceVolume);
+            if (!interfacePressure(1 - traceVolume, pStar))
+            {
+                fail(c, main, "interface pressure (no convergence)", pStar);
+                continue;
+            }
 
             scalar sumActive = 0;
             for (label k = 0; k < nPhases_; ++k)
