@@ -27,6 +27,7 @@ Description
 #include "mechanicalRelaxation.H"
 #include "uniformDimensionedFields.H"
 #include "bodyAcceleration.H"
+#include "landingDeltaT.H"
 
 int main(int argc, char *argv[])
 {
@@ -49,14 +50,11 @@ int main(int argc, char *argv[])
 
         const scalar dtStable = dem.stableDeltaT();
         scalar dt = min(maxCo*dtStable, maxDeltaT);
-        dt = min(dt, runTime.endTime().value() - runTime.value());
-        // Let OpenFOAM shorten the step to meet the next write time, but
-        // never lengthen it past maxCo
-        runTime.setDeltaT(dt);
-        if (runTime.deltaTValue() > dt)
-        {
-            runTime.setDeltaT(dt, false);
-        }
+
+        // Land exactly on the next write time (adjustable write control)
+        // and on endTime, with steps no longer than the stable one
+        dt = landingDeltaT(runTime, dt);
+        runTime.setDeltaT(dt, false);
         dt = runTime.deltaTValue();
 
         const scalar oldTime = runTime.value();
@@ -69,6 +67,8 @@ int main(int argc, char *argv[])
         Info<< "Time = " << runTime.timeName()
             << "  deltaT = " << dt
             << "  Courant Number max = " << dt/dtStable << endl;
+
+        #include "bodyAccelerationField.H"
 
         dem.hyperbolicStep(dt, q);
 

@@ -2,6 +2,7 @@
 #include "faceFrame.H"
 #include "HLLC.H"
 #include "contactFractions.H"
+#include "alphaClosure.H"
 #include "fvc.H"
 #include "emptyFvPatch.H"
 #include "wedgeFvPatch.H"
@@ -51,6 +52,8 @@ Foam::demSolver::demSolver
     E_(nPhases_),
     a_(nPhases_),
     sigma_(nPhases_),
+    gradU_(),
+    acceleration_(nullptr),
     slopes_(nPhases_),
     nbrStates_(mesh_.boundary().size()),
     dAlpha_(nPhases_),
@@ -111,8 +114,40 @@ Foam::demSolver::demSolver
 
     classifyPatches();
 
+    const word limiter
+    (
+        schemeDict.getOrDefault<word>("velocityLimiter", "cellLimited")
+    );
+    if (limiter != "cellLimited" && limiter != "none")
+    {
+        FatalIOErrorInFunction(schemeDict)
+            << "Unknown velocityLimiter " << limiter
+            << "; valid: (cellLimited none)" << exit(FatalIOError);
+    }
+    List<linearVelocityGradient::neighbour> kinds(patchKinds_.size());
+    forAll(patchKinds_, patchi)
+    {
+        switch (patchKinds_[patchi])
+        {
+            case patchKind::empty:
+                kinds[patchi] = linearVelocityGradient::neighbour::none; break;
+            case patchKind::coupled:
+                kinds[patchi] = linearVelocityGradient::neighbour::coupled; break;
+            case patchKind::mirror:
+                kinds[patchi] = linearVelocityGradient::neighbour::mirror; break;
+            case patchKind::wedge:
+                kinds[patchi] = linearVelocityGradient::neighbour::wedge; break;
+            default:
+                kinds[patchi] = linearVelocityGradient::neighbour::value; break;
+        }
+    }
+    gradUCalc_.reset
+    (
+        new linearVelocityGradient(mesh_, kinds, limiter == "cellLimited")
+    );
+
     Info<< "Discrete equations: order " << order_ << ", Riemann solver "
-        << solverName;
+        << solverName << ", velocity limiter " << limiter;
     if (order_ == 1)
     {
         Info<< ", face velocity reconstruction "
@@ -195,7 +230,6 @@ void Foam::demSolver::centreSides
 ) const
 {
     const vector& Uc = phases_.U()[celli];
-    scalar sumAlpha = 0;
 
     for (label k = 0; k < nPhases_; ++k)
     {
@@ -220,14 +254,9 @@ void Foam::demSolver::centreSides
         }
 
         const cellSlopes& sl = slopes_[k][celli];
-        if (k < nPhases_ - 1)
+        if (sk.alpha >= phases_.alphaMinor())
         {
             sk.alpha = min(max(sk.alpha + sl.dtAlpha, 0.0), 1.0);
-            sumAlpha += sk.alpha;
-        }
-        else
-        {
-            sk.alpha = max(1 - sumAlpha, 0.0);
         }
 
         const double rho = sk.rho + sl.dtRho;
@@ -246,6 +275,17 @@ void Foam::demSolver::centreSides
             sk.A = A;
         }
         completeSide(k, sk);
+    }
+
+    if (order_ == 2)
+    {
+        // The cell's largest phase closes the sum
+        floorAndClose
+        (
+            nPhases_,
+            0.0,
+            [&s](const label k) -> double& { return s[k].alpha; }
+        );
     }
 }
 
@@ -288,33 +328,37 @@ void Foam::demSolver::faceSides
         return;
     }
 
-    // Second order: alpha of the first N-1 phases, closed by the sum
+    // Second order: alpha of every phase but the cell's largest, which
+    // closes the sum; a minor phase (below alphaMinor in the cell) keeps
+    // its cell value, so it never offers the faces more than it holds
     const cobasis::vector de(toEigen(d));
     const scalar alphaMin = phases_.alphaMin();
-    scalar sumAlpha = 0;
-    for (label k = 0; k < nPhases_ - 1; ++k)
+    label main = 0;
+    for (label k = 1; k < nPhases_; ++k)
     {
+        if (phases_.alpha(k)[celli] > phases_.alpha(main)[celli]) main = k;
+    }
+    scalar sumAlpha = 0;
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if (k == main) continue;
+        const scalar ac = phases_.alpha(k)[celli];
         const cellSlopes& sl = slopes_[k][celli];
-        alphaScratch_[k] = min
-        (
-            max
-            (
-                phases_.alpha(k)[celli] + sl.gAlpha.dot(de) + sl.dtAlpha,
-                alphaMin
-            ),
-            1 - alphaMin
-        );
+        alphaScratch_[k] =
+            ac < phases_.alphaMinor()
+          ? ac
+          : min(max(ac + sl.gAlpha.dot(de) + sl.dtAlpha, alphaMin), 1 - alphaMin);
         sumAlpha += alphaScratch_[k];
     }
-    if (sumAlpha > 1 - alphaMin && nPhases_ > 1)
+    if (sumAlpha > 1 - alphaMin)
     {
-        for (label k = 0; k < nPhases_ - 1; ++k)
+        for (label k = 0; k < nPhases_; ++k)
         {
-            alphaScratch_[k] *= (1 - alphaMin)/sumAlpha;
+            if (k != main) alphaScratch_[k] *= (1 - alphaMin)/sumAlpha;
         }
         sumAlpha = 1 - alphaMin;
     }
-    alphaScratch_[nPhases_ - 1] = 1 - sumAlpha;
+    alphaScratch_[main] = 1 - sumAlpha;
 
     for (label k = 0; k < nPhases_; ++k)
     {
@@ -344,7 +388,6 @@ void Foam::demSolver::faceSides
             sk.U = toEigen(Uc);
             sk.A = Ac;
         }
-
         completeSide(k, sk);
 
         // a_f^2 = c_h^2(face) + (a_cell^2 - c_h^2(cell)), >= a_cell^2/4
@@ -361,8 +404,8 @@ void Foam::demSolver::computeSlopes(const scalar dt)
     const label nCells = mesh_.nCells();
     const volVectorField& Ufield = phases_.U();
     const vectorField& U = Ufield.primitiveField();
-    const tmp<volTensorField> tgradU(fvc::grad(Ufield));
-    const tensorField& gradU = tgradU().primitiveField();
+    gradUCalc_->calculate(Ufield, gradU_);
+    const tensorField& gradU = gradU_;
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
     const scalar halfDt = 0.5*dt;
@@ -430,6 +473,10 @@ void Foam::demSolver::computeSlopes(const scalar dt)
                 sl.dtRho = 0;
                 sl.dtP = 0;
                 sl.dtU.setZero();
+                if (acceleration_)
+                {
+                    sl.dtU = halfDt*toEigen((*acceleration_)[c]);
+                }
                 sl.dtA.setZero();
                 continue;
             }
@@ -471,6 +518,10 @@ void Foam::demSolver::computeSlopes(const scalar dt)
                 -halfDt
                *(u.dot(sl.gP) + rho[c]*ph.eos().c2(rho[c], p[c])*divU);
             sl.dtU = -halfDt*(L*u - divSigma/rho[c]);
+            if (acceleration_)
+            {
+                sl.dtU += halfDt*toEigen((*acceleration_)[c]);
+            }
             if (ph.solid())
             {
                 sl.dtA =
@@ -978,7 +1029,7 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
     }
     else if (reconstructU_)
     {
-        gradU_ = fvc::grad(phases_.U())().primitiveField();
+        gradUCalc_->calculate(phases_.U(), gradU_);
     }
     exchangeCoupled();
 
@@ -1061,7 +1112,22 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
             const cobasis::vector S(toEigen(Sf[facei]));
             const cobasis::vector n(S/magSf_[facei]);
 
-            faceSides(celli, Cf[facei] - C[celli], cellFace_);
+            // On a wedge face: reconstruct at the image of the face
+            // centroid in the cell's plane, then rotate into the face
+            const vector d
+            (
+                kind == patchKind::wedge
+              ? vector
+                (
+                    (
+                        refCast<const wedgePolyPatch>(patch.patch())
+                       .faceT().T() & Cf[facei]
+                    )
+                  - C[celli]
+                )
+              : vector(Cf[facei] - C[celli])
+            );
+            faceSides(celli, d, cellFace_);
 
             if (order_ == 2)
             {

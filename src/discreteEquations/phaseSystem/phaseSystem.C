@@ -1,4 +1,5 @@
 #include "phaseSystem.H"
+#include "alphaClosure.H"
 #include "polyPatch.H"
 #include "zeroGradientFvPatchFields.H"
 #include "OSspecific.H"
@@ -86,17 +87,13 @@ void Foam::phaseSystem::checkAlpha()
                 << exit(FatalError);
         }
 
-        // Floor, then normalise exactly
-        sum = 0;
-        forAll(phases_, k)
-        {
-            alpha_[k][celli] = max(alpha_[k][celli], alphaMin_);
-            sum += alpha_[k][celli];
-        }
-        forAll(phases_, k)
-        {
-            alpha_[k][celli] /= sum;
-        }
+        // Floor, and close the sum exactly with the largest phase
+        floorAndClose
+        (
+            phases_.size(),
+            alphaMin_,
+            [&](const label k) -> scalar& { return alpha_[k][celli]; }
+        );
     }
 }
 

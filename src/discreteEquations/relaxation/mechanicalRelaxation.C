@@ -1,4 +1,5 @@
 #include "mechanicalRelaxation.H"
+#include "alphaClosure.H"
 
 namespace
 {
@@ -72,6 +73,10 @@ bool Foam::mechanicalRelaxation::interfacePressure
     {
         scalar dF;
         const scalar f = F(p, dF);
+        if (f == 0)
+        {
+            return true;
+        }
         if (f > 0) lo = p; else hi = p;
 
         scalar pNew = p - f/dF;
@@ -83,7 +88,7 @@ bool Foam::mechanicalRelaxation::interfacePressure
               ? 0.5*(lo + hi)
               : p + 2*max(mag(p - lo), scalar(1));
         }
-        if (f == 0 || mag(pNew - p) <= 1e-15*(mag(pNew) + pScale))
+        if (mag(pNew - p) <= 1e-15*(mag(pNew) + pScale))
         {
             p = pNew;
             return true;
@@ -120,29 +125,26 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
 
     for (label c = 0; c < nCells; ++c)
     {
-        // 1. Floor and normalisation of alpha; compatibility of A
-        scalar sumAlpha = 0;
-        label main = 0;
+        // 1. Floor of alpha, sum closed by the largest phase; compatibility
+        //    of A
         for (label k = 0; k < nPhases_; ++k)
         {
-            scalar& a = q.alpha[k][c];
-            if (!(a >= alphaMin))
+            if (!(q.alpha[k][c] > -1e-3))
             {
-                if (!(a > -1e-3))
-                {
-                    fail(c, k, "alpha", a);
-                }
-                a = alphaMin;
+                fail(c, k, "alpha", q.alpha[k][c]);
             }
-            sumAlpha += a;
-            if (a > q.alpha[main][c]) main = k;
         }
+        const label main = floorAndClose
+        (
+            nPhases_,
+            alphaMin,
+            [&](const label k) -> scalar& { return q.alpha[k][c]; }
+        );
 
         cobasis::vector mom(cobasis::vector::Zero());
         scalar mass = 0;
         for (label k = 0; k < nPhases_; ++k)
         {
-            q.alpha[k][c] /= sumAlpha;
             alpha_[k] = q.alpha[k][c];
             trace_[k] = alpha_[k] < alphaTrace;
 
@@ -267,12 +269,13 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
             const hyperelasticPhase& ph = phases_.phase(k);
             const scalar rho = 1/v0_[k];
             scalar pk = max(pStar, ph.eos().pMin() + 1);
+            const scalar eeOld = ph.elasticEnergy(q.A[k][c]);
             if (ph.solid())
             {
                 q.A[k][c] = cobasis::unstrained(rho, ph.rho0());
             }
             const scalar eNew = ph.eos().e(rho, pk);
-            eh0_[main] -= m_[k]*(eNew - eh0_[k])/m_[main];
+            eh0_[main] -= m_[k]*(eNew - eh0_[k] - eeOld)/m_[main];
             eh0_[k] = eNew;
         }
 
