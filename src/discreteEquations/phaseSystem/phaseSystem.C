@@ -247,6 +247,7 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
     p_.setSize(N);
     A_.setSize(N);
     epsilonP_.setSize(N);
+    plasticWork_.setSize(N);
 
     const word timeName(mesh.time().timeName());
 
@@ -383,6 +384,31 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
         {
             epsilonP_[k].primitiveFieldRef() =
                 volScalarField(epsIO, mesh).primitiveField();
+        }
+
+        IOobject wIO
+        (
+            "plasticWork." + name,
+            timeName,
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            phases_[k].solid() ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+        );
+        plasticWork_.set
+        (
+            k,
+            new volScalarField
+            (
+                wIO,
+                mesh,
+                dimensionedScalar(dimEnergy/dimMass, Zero),
+                derivedPatchTypes()
+            )
+        );
+        if (wIO.typeHeaderOk<volScalarField>(true))
+        {
+            plasticWork_[k].primitiveFieldRef() =
+                volScalarField(wIO, mesh).primitiveField();
         }
 
         // Admissible initial state

@@ -288,10 +288,12 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
 
             if (ph.solid() && !trace_[k])
             {
-                eh0_[k] += phases_.plastic(k).correct
+                const scalar heat = phases_.plastic(k).correct
                 (
                     A, phases_.epsilonP(k)[c], ph.elastic(), dt
                 );
+                eh0_[k] += heat;
+                phases_.plasticWork(k)[c] += heat;
             }
 
             const scalar rho = 1/v0_[k];
