@@ -67,6 +67,12 @@ int main(int argc, char *argv[])
         Info<< "Time = " << runTime.timeName()
             << "  deltaT = " << dt
             << "  Courant Number max = " << dt/dtStable << endl;
+        if (debugDeltaT && dem.limitingCell() >= 0)
+        {
+            Pout<< "    deltaT limited by cell " << dem.limitingCell()
+                << " at " << mesh.C()[dem.limitingCell()]
+                << ", wave speed " << dem.limitingSpeed() << endl;
+        }
 
         #include "bodyAccelerationField.H"
 

@@ -54,6 +54,8 @@ Foam::demSolver::demSolver
     sigma_(nPhases_),
     gradU_(),
     acceleration_(nullptr),
+    limitingCell_(-1),
+    limitingSpeed_(0),
     slopes_(nPhases_),
     nbrStates_(mesh_.boundary().size()),
     dAlpha_(nPhases_),
@@ -216,10 +218,26 @@ void Foam::demSolver::completeSide(const label k, phaseSide& s) const
     const hyperelasticPhase& ph = phases_.phase(k);
     s.solid = ph.solid();
     s.trace = s.alpha < phases_.alphaTrace();
-    s.minor = s.alpha < phases_.alphaMinor();
     s.cT = std::sqrt(ph.cT2());
     s.sigma = ph.sigma(s.p, s.A);
     s.E = ph.e(s.rho, s.p, s.A) + 0.5*s.U.squaredNorm();
+}
+
+
+void Foam::demSolver::markMinor(std::vector<phaseSide>& s) const
+{
+    double rhoMix = 0;
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        rhoMix += s[k].alpha*s[k].rho;
+    }
+    const double Ymin = phases_.massFractionMinor();
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        s[k].minor =
+            s[k].alpha < phases_.alphaMinor()
+         || s[k].alpha*s[k].rho < Ymin*rhoMix;
+    }
 }
 
 
@@ -246,7 +264,6 @@ void Foam::demSolver::centreSides
             const hyperelasticPhase& ph = phases_.phase(k);
             sk.solid = ph.solid();
             sk.trace = sk.alpha < phases_.alphaTrace();
-            sk.minor = sk.alpha < phases_.alphaMinor();
             sk.cT = std::sqrt(ph.cT2());
             sk.sigma = sigma_[k][celli];
             sk.E = E_[k][celli];
@@ -287,6 +304,7 @@ void Foam::demSolver::centreSides
             [&s](const label k) -> double& { return s[k].alpha; }
         );
     }
+    markMinor(s);
 }
 
 
@@ -323,8 +341,8 @@ void Foam::demSolver::faceSides
             sk.cT = std::sqrt(ph.cT2());
             sk.solid = ph.solid();
             sk.trace = sk.alpha < phases_.alphaTrace();
-            sk.minor = sk.alpha < phases_.alphaMinor();
         }
+        markMinor(s);
         return;
     }
 
@@ -396,6 +414,7 @@ void Foam::demSolver::faceSides
             ph.eos().c2(sk.rho, sk.p) + ac2 - ph.eos().c2(rhoc, pc);
         sk.a = std::sqrt(max(a2, 0.25*ac2));
     }
+    markMinor(s);
 }
 
 
@@ -670,6 +689,7 @@ void Foam::demSolver::ghostSides
             }
         }
     }
+    markMinor(ghost);
 }
 
 
@@ -952,14 +972,22 @@ Foam::scalar Foam::demSolver::stableDeltaT() const
     const vectorField& Sf = mesh_.faceAreas();
     const vectorField& U = phases_.U().primitiveField();
 
-    // Largest longitudinal speed among the phases above alphaMinor
+    // Largest longitudinal speed among the phases that are not minor
+    // (above alphaMinor and massFractionMinor)
+    const scalarField& rhoMix = phases_.rhoMixture().primitiveField();
+    const scalar Ymin = phases_.massFractionMinor();
     scalarField aMax(nCells, 0);
     for (label k = 0; k < nPhases_; ++k)
     {
         const scalarField& alpha = phases_.alpha(k).primitiveField();
+        const scalarField& rho = phases_.rho(k).primitiveField();
         for (label celli = 0; celli < nCells; ++celli)
         {
-            if (alpha[celli] >= phases_.alphaMinor())
+            if
+            (
+                alpha[celli] >= phases_.alphaMinor()
+             && alpha[celli]*rho[celli] >= Ymin*rhoMix[celli]
+            )
             {
                 aMax[celli] = max(aMax[celli], a_[k][celli]);
             }
@@ -1001,14 +1029,17 @@ Foam::scalar Foam::demSolver::stableDeltaT() const
     }
 
     scalar dt = GREAT;
+    limitingCell_ = -1;
     const scalarField& V = mesh_.V();
     forAll(V, celli)
     {
-        if (sumLambda[celli] > 0)
+        if (sumLambda[celli] > 0 && 2*V[celli]/sumLambda[celli] < dt)
         {
-            dt = min(dt, 2*V[celli]/sumLambda[celli]);
+            dt = 2*V[celli]/sumLambda[celli];
+            limitingCell_ = celli;
         }
     }
+    limitingSpeed_ = limitingCell_ >= 0 ? aMax[limitingCell_] : 0;
     return returnReduce(dt, minOp<scalar>());
 }
 

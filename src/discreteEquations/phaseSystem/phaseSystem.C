@@ -150,6 +150,10 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
     alphaMin_(dict_.getOrDefault<scalar>("alphaMin", 1e-8)),
     alphaTrace_(dict_.getOrDefault<scalar>("alphaTrace", 1e-6)),
     alphaMinor_(dict_.getOrDefault<scalar>("alphaMinor", 1e-3)),
+    massFractionMinor_
+    (
+        dict_.getOrDefault<scalar>("massFractionMinor", 1e-6)
+    ),
     U_
     (
         IOobject

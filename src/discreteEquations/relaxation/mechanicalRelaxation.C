@@ -201,7 +201,11 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
             const scalar pk = eos.p(1/v0_[k], eh0_[k]);
             if (!(pk > eos.pMin()))
             {
-                if (alpha_[k] < phases_.alphaMinor())
+                if
+                (
+                    alpha_[k] < phases_.alphaMinor()
+                 || m_[k] < phases_.massFractionMinor()*mass
+                )
                 {
                     trace_[k] = true;
                 }
