@@ -49,7 +49,7 @@ int main(int argc, char *argv[])
         dem.prepare();
 
         const scalar dtStable = dem.stableDeltaT();
-        scalar dt = min(maxCo*dtStable, maxDeltaT);
+        scalar dt = min(dtFactor*maxCo*dtStable, maxDeltaT);
 
         // Land exactly on the next write time (adjustable write control)
         // and on endTime, with steps no longer than the stable one
@@ -83,6 +83,9 @@ int main(int argc, char *argv[])
         const mechanicalRelaxation::stateError err = relaxation.correct(q, dt);
 
         #include "checkState.H"
+
+        // A good step: let a reduced time step grow back
+        dtFactor = min(2*dtFactor, scalar(1));
 
         phases.correctBoundaryConditions();
         phases.correctMixture();

@@ -150,12 +150,23 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
 
             if (!(q.mass[k][c] > 0))
             {
-                if (!(alpha_[k] < phases_.alphaMinor()))
+                // Minor after the step, or before it (by its mass fraction)
+                scalar oldMix = 0;
+                for (label j = 0; j < nPhases_; ++j)
+                {
+                    oldMix += phases_.alpha(j)[c]*phases_.rho(j)[c];
+                }
+                const bool minor =
+                    alpha_[k] < phases_.alphaMinor()
+                 || phases_.alpha(k)[c]*phases_.rho(k)[c]
+                  < phases_.massFractionMinor()*oldMix;
+                if (!minor)
                 {
                     fail(c, k, "mass", q.mass[k][c]);
                 }
                 // A minor phase that lost all its mass keeps its last
-                // density (the mass this adds is below alphaMinor rho)
+                // density (the mass this adds is below alphaMinor rho, or
+                // massFractionMinor of the cell's mass)
                 q.mass[k][c] = alpha_[k]*phases_.rho(k)[c];
             }
             m_[k] = q.mass[k][c];
