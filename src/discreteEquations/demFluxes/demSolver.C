@@ -64,8 +64,6 @@ Foam::demSolver::demSolver
     dEnergy_(nPhases_),
     L_(nPhases_),
     advection_(nPhases_),
-    sideL_(nPhases_),
-    sideR_(nPhases_),
     centre_(nPhases_),
     cellFace_(nPhases_),
     ghost_(nPhases_),
@@ -693,7 +691,12 @@ void Foam::demSolver::ghostSides
 }
 
 
-void Foam::demSolver::solveFace(const cobasis::matrix& R)
+void Foam::demSolver::solveFace
+(
+    const std::vector<phaseSide>& sideL,
+    const std::vector<phaseSide>& sideR,
+    const cobasis::matrix& R
+)
 {
     for (label k = 0; k < nPhases_; ++k)
     {
@@ -707,8 +710,8 @@ void Foam::demSolver::solveFace(const cobasis::matrix& R)
         fc.vStarWeight = 0;
     }
 
-    const auto alphaL = [this](const int k) { return sideL_[k].alpha; };
-    const auto alphaR = [this](const int k) { return sideR_[k].alpha; };
+    const auto alphaL = [&sideL](const int k) { return sideL[k].alpha; };
+    const auto alphaR = [&sideR](const int k) { return sideR[k].alpha; };
 
     const cobasis::vector n(R.row(0).transpose());
 
@@ -725,8 +728,8 @@ void Foam::demSolver::solveFace(const cobasis::matrix& R)
         nPhases_, alphaL, alphaR,
         [&](const int k, const int j, const double S)
         {
-            const phaseSide& sl = sideL_[k];
-            const phaseSide& sr = sideR_[j];
+            const phaseSide& sl = sideL[k];
+            const phaseSide& sr = sideR[j];
 
             if (sl.minor && sr.minor)
             {
@@ -813,14 +816,14 @@ void Foam::demSolver::solveFace(const cobasis::matrix& R)
     }
     else
     {
-        uFace = 0.5*(sideL_[0].U + sideR_[0].U).dot(n);
+        uFace = 0.5*(sideL[0].U + sideR[0].U).dot(n);
     }
 
     for (const minorPair& tp : minorPairs_)
     {
         const bool fromLeft = (uFace >= 0);
         const int up = fromLeft ? tp.k : tp.j;
-        const phaseSide& K = fromLeft ? sideL_[tp.k] : sideR_[tp.j];
+        const phaseSide& K = fromLeft ? sideL[tp.k] : sideR[tp.j];
         const cobasis::vector s(K.sigma*n);
         const double S = tp.S;
 
@@ -835,8 +838,8 @@ void Foam::demSolver::solveFace(const cobasis::matrix& R)
         faceResult_[up].dEnergy[0] -= S*energyFlux;
         faceResult_[up].dEnergy[1] += S*energyFlux;
 
-        const phaseSide& sl = sideL_[tp.k];
-        const phaseSide& sr = sideR_[tp.j];
+        const phaseSide& sl = sideL[tp.k];
+        const phaseSide& sr = sideR[tp.j];
         faceResult_[tp.k].vStarSum += S*(sl.U + (uFace - sl.U.dot(n))*n);
         faceResult_[tp.k].vStarWeight += S;
         faceResult_[tp.j].vStarSum += S*(sr.U + (uFace - sr.U.dot(n))*n);
@@ -903,26 +906,42 @@ void Foam::demSolver::addAdvection
 void Foam::demSolver::internalContacts
 (
     const label c,
-    const cobasis::matrix& R,
-    const scalar magSf
+    const cobasis::vector& nOut,
+    const scalar magSf,
+    const std::vector<phaseSide>& face
 )
 {
-    // cellFace_ holds the face states of cell c at this face
-    centreSides(c, centre_);
+    // Time-centred alphas of the cell first: most cells hold the same
+    // alphas at the centre and on the face, and need no contact
+    scalar sumAlpha = 0;
+    label main = 0;
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        const scalar a = phases_.alpha(k)[c];
+        alphaScratch_[k] =
+            a >= phases_.alphaMinor()
+          ? min(max(a + slopes_[k][c].dtAlpha, 0.0), 1.0)
+          : a;
+        if (alphaScratch_[k] > alphaScratch_[main]) main = k;
+    }
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if (k != main) sumAlpha += alphaScratch_[k];
+    }
+    alphaScratch_[main] = 1 - sumAlpha;
 
     bool differ = false;
     for (label k = 0; k < nPhases_; ++k)
     {
-        if (centre_[k].alpha != cellFace_[k].alpha) differ = true;
+        if (alphaScratch_[k] != face[k].alpha) differ = true;
     }
     if (!differ)
     {
         return;
     }
 
-    sideL_ = centre_;
-    sideR_ = cellFace_;
-    solveFace(R);
+    centreSides(c, centre_);
+    solveFace(centre_, face, faceFrame::rotation(nOut));
 
     // Both sides are cell c: the conservative parts cancel exactly, the
     // Lagrangian parts remain
@@ -1088,9 +1107,7 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
         faceSides(o, Cf[facei] - C[o], faceO);
         faceSides(nb, Cf[facei] - C[nb], faceN);
 
-        sideL_ = faceO;
-        sideR_ = faceN;
-        solveFace(frames_[facei]);
+        solveFace(faceO, faceN, frames_[facei]);
 
         const cobasis::vector S(toEigen(Sf[facei]));
         addToCell(o, 0, magSf_[facei], S);
@@ -1100,15 +1117,9 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
 
         if (order_ == 2)
         {
-            cellFace_ = faceO;
-            internalContacts(o, frames_[facei], magSf_[facei]);
-            cellFace_ = faceN;
-            internalContacts
-            (
-                nb,
-                faceFrame::rotation(-S/magSf_[facei]),
-                magSf_[facei]
-            );
+            const cobasis::vector n(S/magSf_[facei]);
+            internalContacts(o, n, magSf_[facei], faceO);
+            internalContacts(nb, -n, magSf_[facei], faceN);
         }
     }
 
@@ -1162,9 +1173,7 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
 
             if (order_ == 2)
             {
-                faceO = cellFace_;
-                internalContacts(celli, frames_[facei], magSf_[facei]);
-                cellFace_ = faceO;
+                internalContacts(celli, n, magSf_[facei], cellFace_);
             }
 
             if (kind == patchKind::wedge)
@@ -1184,16 +1193,12 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
 
             if (cellIsLeft)
             {
-                sideL_ = cellFace_;
-                sideR_ = ghost_;
-                solveFace(frames_[facei]);
+                solveFace(cellFace_, ghost_, frames_[facei]);
             }
             else
             {
                 // Same orientation as on the neighbouring processor
-                sideL_ = ghost_;
-                sideR_ = cellFace_;
-                solveFace(faceFrame::rotation(-n));
+                solveFace(ghost_, cellFace_, faceFrame::rotation(-n));
             }
 
             addToCell(celli, cellIsLeft ? 0 : 1, magSf_[facei], S);
