@@ -459,7 +459,21 @@ void Foam::demSolver::computeSlopes(const scalar dt)
             }
         }
 
-        const tmp<volVectorField> tgAlpha(fvc::grad(alpha));
+        // A single phase has alpha = 1 everywhere: no slope to compute
+        const tmp<volVectorField> tgAlpha
+        (
+            nPhases_ > 1
+          ? fvc::grad(alpha)
+          : tmp<volVectorField>
+            (
+                new volVectorField
+                (
+                    IOobject("gradAlpha", mesh_.time().timeName(), mesh_),
+                    mesh_,
+                    dimensionedVector(dimless/dimLength, Zero)
+                )
+            )
+        );
         const tmp<volVectorField> tgRho(fvc::grad(phases_.rho(k)));
         const tmp<volVectorField> tgP(fvc::grad(phases_.p(k)));
         const vectorField& gAlpha = tgAlpha().primitiveField();
@@ -971,13 +985,26 @@ void Foam::demSolver::prepare()
         const scalarField& p = phases_.p(k).primitiveField();
         const tensorField& A = phases_.A(k).primitiveField();
 
+        const scalarField& alpha = phases_.alpha(k).primitiveField();
+        const scalar aMinor = phases_.alphaMinor();
+        const scalar cT2 = ph.cT2();
+
         for (label celli = 0; celli < nCells; ++celli)
         {
             const cobasis::matrix Ac(toEigen(A[celli]));
             sigma_[k][celli] = ph.sigma(p[celli], Ac);
             E_[k][celli] =
                 ph.e(rho[celli], p[celli], Ac) + 0.5*magSqr(U[celli]);
-            a_[k][celli] = std::sqrt(ph.a2Max(rho[celli], p[celli], Ac));
+
+            // The acoustic eigenproblem for the phases that set the time
+            // step; a minor phase (a trace is unstrained) takes the
+            // small-strain speed c_h^2 + 4/3 mu/rho0
+            a_[k][celli] = std::sqrt
+            (
+                alpha[celli] < aMinor
+              ? ph.eos().c2(rho[celli], p[celli]) + 4.0/3.0*cT2
+              : ph.a2Max(rho[celli], p[celli], Ac)
+            );
         }
     }
 }
