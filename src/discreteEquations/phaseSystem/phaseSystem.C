@@ -332,6 +332,7 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
         }
         else
         {
+            pIO.readOpt() = IOobject::NO_READ;
             p_.set(k, new volScalarField(pIO, pMixture_));
         }
 
