@@ -33,12 +33,11 @@ Usage
 #include "phaseSystem.H"
 #include "wedgePolyPatch.H"
 #include "OFstream.H"
+#include "foamEigen.H"
 #include <map>
 
 namespace
 {
-
-typedef Eigen::Matrix<double, 3, 3, Eigen::RowMajor> rowMatrix;
 
 // Full angle of the wedge mesh (2 pi for a 3-D mesh)
 Foam::scalar meshAngle(const Foam::fvMesh& mesh)
@@ -196,10 +195,8 @@ int main(int argc, char *argv[])
                 internal += m*ph.eos().e(rho[celli], p[celli]);
                 if (ph.solid())
                 {
-                    elastic += m*ph.elasticEnergy
-                    (
-                        Eigen::Map<const rowMatrix>(A[celli].v_)
-                    );
+                    elastic +=
+                        m*ph.elasticEnergy(foamEigen::toEigen(A[celli]));
                     plastic += m*wP[celli];
                 }
             }

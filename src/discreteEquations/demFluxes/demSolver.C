@@ -13,23 +13,9 @@
 #include "slipFvPatchFields.H"
 #include "noSlipFvPatchVectorField.H"
 #include "PstreamBuffers.H"
+#include "foamEigen.H"
 
-namespace
-{
-
-typedef Eigen::Matrix<double, 3, 3, Eigen::RowMajor> rowMatrix;
-
-inline Foam::cobasis::matrix toEigen(const Foam::tensor& T)
-{
-    return Eigen::Map<const rowMatrix>(T.v_);
-}
-
-inline Foam::cobasis::vector toEigen(const Foam::vector& v)
-{
-    return Foam::cobasis::vector(v.x(), v.y(), v.z());
-}
-
-} // End anonymous namespace
+using Foam::foamEigen::toEigen;
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

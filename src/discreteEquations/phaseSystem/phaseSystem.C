@@ -1,5 +1,6 @@
 #include "phaseSystem.H"
 #include "alphaClosure.H"
+#include "foamEigen.H"
 #include "polyPatch.H"
 #include "zeroGradientFvPatchFields.H"
 #include "OSspecific.H"
@@ -498,14 +499,7 @@ void Foam::phaseSystem::correctMixture()
             sigma[celli] -= a[celli]*p[celli]*symmTensor::I;
             if (ph.solid())
             {
-                const cobasis::matrix S
-                (
-                    ph.S
-                    (
-                        Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>
-                        (A[celli].v_)
-                    )
-                );
+                const cobasis::matrix S(ph.S(foamEigen::toEigen(A[celli])));
                 sigma[celli] += a[celli]*symmTensor
                 (
                     S(0, 0), S(0, 1), S(0, 2),

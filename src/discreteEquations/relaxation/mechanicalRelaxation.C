@@ -1,19 +1,8 @@
 #include "mechanicalRelaxation.H"
 #include "alphaClosure.H"
+#include "foamEigen.H"
 
-namespace
-{
-
-typedef Eigen::Matrix<double, 3, 3, Eigen::RowMajor> rowMatrix;
-
-inline Foam::tensor toTensor(const Foam::cobasis::matrix& M)
-{
-    Foam::tensor T;
-    Eigen::Map<rowMatrix>(T.v_) = M;
-    return T;
-}
-
-} // End anonymous namespace
+using Foam::foamEigen::toTensor;
 
 
 Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
