@@ -142,6 +142,16 @@ void Foam::linearVelocityGradient::calculate
     gradU.setSize(mesh_.nCells());
     gradU = Zero;
 
+    // Range of the neighbours' velocities, for the limiter, gathered in the
+    // same passes as the gradient
+    vectorField maxU(limit_ ? U.primitiveField() : vectorField());
+    vectorField minU(limit_ ? U.primitiveField() : vectorField());
+    const auto range = [&](const label celli, const vector& Unb)
+    {
+        maxU[celli] = max(maxU[celli], Unb);
+        minU[celli] = min(minU[celli], Unb);
+    };
+
     forAll(nei, facei)
     {
         const vector d(C[nei[facei]] - C[own[facei]]);
@@ -149,17 +159,10 @@ void Foam::linearVelocityGradient::calculate
         const tensor wddU((d/magSqr(d))*dU);
         gradU[own[facei]] += wddU;
         gradU[nei[facei]] += wddU;
-    }
-
-    // Neighbour values across the boundary, kept for the limiter
-    List<vectorField> nbrCs(mesh_.boundary().size());
-    List<vectorField> nbrUs(mesh_.boundary().size());
-    forAll(mesh_.boundary(), patchi)
-    {
-        if (kinds_[patchi] == neighbour::coupled)
+        if (limit_)
         {
-            nbrCs[patchi] = Cv.boundaryField()[patchi].patchNeighbourField();
-            nbrUs[patchi] = U.boundaryField()[patchi].patchNeighbourField();
+            range(own[facei], U[nei[facei]]);
+            range(nei[facei], U[own[facei]]);
         }
     }
 
@@ -167,11 +170,21 @@ void Foam::linearVelocityGradient::calculate
     {
         if (kinds_[patchi] == neighbour::none) continue;
         const labelUList& fc = mesh_.boundary()[patchi].faceCells();
+        vectorField nbrC, nbrU;
+        if (kinds_[patchi] == neighbour::coupled)
+        {
+            nbrC = Cv.boundaryField()[patchi].patchNeighbourField();
+            nbrU = U.boundaryField()[patchi].patchNeighbourField();
+        }
         forAll(fc, i)
         {
             vector d, dU;
-            boundaryNeighbour(patchi, i, U, nbrCs[patchi], nbrUs[patchi], d, dU);
+            boundaryNeighbour(patchi, i, U, nbrC, nbrU, d, dU);
             gradU[fc[i]] += (d/magSqr(d))*dU;
+            if (limit_)
+            {
+                range(fc[i], U[fc[i]] + dU);
+            }
         }
     }
 
@@ -187,32 +200,6 @@ void Foam::linearVelocityGradient::calculate
 
     // Barth-Jespersen: face-centroid extrapolations within the neighbours'
     // range, component by component
-    vectorField maxU(U.primitiveField());
-    vectorField minU(U.primitiveField());
-
-    forAll(nei, facei)
-    {
-        const vector& Uo = U[own[facei]];
-        const vector& Un = U[nei[facei]];
-        maxU[own[facei]] = max(maxU[own[facei]], Un);
-        minU[own[facei]] = min(minU[own[facei]], Un);
-        maxU[nei[facei]] = max(maxU[nei[facei]], Uo);
-        minU[nei[facei]] = min(minU[nei[facei]], Uo);
-    }
-    forAll(mesh_.boundary(), patchi)
-    {
-        if (kinds_[patchi] == neighbour::none) continue;
-        const labelUList& fc = mesh_.boundary()[patchi].faceCells();
-        forAll(fc, i)
-        {
-            vector d, dU;
-            boundaryNeighbour(patchi, i, U, nbrCs[patchi], nbrUs[patchi], d, dU);
-            const vector Unb(U[fc[i]] + dU);
-            maxU[fc[i]] = max(maxU[fc[i]], Unb);
-            minU[fc[i]] = min(minU[fc[i]], Unb);
-        }
-    }
-
     vectorField limiter(mesh_.nCells(), vector::one);
 
     const auto limitFace = [&](const label celli, const vector& dx)
