@@ -37,8 +37,27 @@ int main(int argc, char *argv[])
         " (discrete equations method)"
     );
 
+    argList::addOption
+    (
+        "endTime",
+        "time",
+        "stop at this time instead of the controlDict's endTime"
+    );
+
     #include "setRootCase.H"
     #include "createTime.H"
+
+    scalar endTimeOption;
+    if (args.readIfPresent("endTime", endTimeOption))
+    {
+        if (!(endTimeOption > runTime.startTime().value()))
+        {
+            FatalErrorInFunction
+                << "-endTime " << endTimeOption << " is not after the start"
+                << " time " << runTime.startTime().value() << exit(FatalError);
+        }
+        runTime.setEndTime(endTimeOption);
+    }
     #include "createMesh.H"
     #include "createFields.H"
 
@@ -84,6 +103,12 @@ int main(int argc, char *argv[])
 
         #include "checkState.H"
 
+        const label nVacuum = returnReduce(relaxation.nVacuum(), sumOp<label>());
+        if (nVacuum)
+        {
+            Info<< "    vacuum floor (pVacuum) in " << nVacuum << " cells" << nl;
+        }
+
         // A good step: let a reduced time step grow back
         dtFactor = min(2*dtFactor, scalar(1));
 
@@ -91,6 +116,24 @@ int main(int argc, char *argv[])
         phases.correctMixture();
 
         runTime.write();
+        if
+        (
+            pendingWrite > 0
+         && runTime.value() >= pendingWrite - 1e-6*runTime.deltaTValue()
+        )
+        {
+            if (!runTime.writeTime())
+            {
+                runTime.writeNow();
+            }
+            pendingWrite = -1;
+        }
+    }
+
+    // The final state, also when endTime is not a write time
+    if (!runTime.writeTime() && runTime.timeIndex() != runTime.startTimeIndex())
+    {
+        runTime.writeNow();
     }
 
     runTime.printExecutionTime(Info);

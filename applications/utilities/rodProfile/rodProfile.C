@@ -9,16 +9,20 @@ Description
     selected time of an impactFoam case, and the energy budget:
 
       postProcessing/rodProfile/<phase>.csv, one row per time:
-        t, length, maxRadius, undeformedLength,
+        t, length, maxRadius, undeformedLength, zMin, axialVelocity,
         kinetic, elastic, plasticWork, internal, total  (energies in J;
         on a wedge mesh, of the full body of revolution)
+      zMin is the lowest axial position of the body along the axis row
+      (alpha integrated from the first slice holding it), axialVelocity
+      the body's mass-averaged velocity along the axis.
       postProcessing/rodProfile/<time>/profile_<phase>.csv:
         z, radius (the rod's profile r(z))
 
     The rod lies along -axis (default (1 0 0)) through -origin (default
     (0 0 0)). Cells are grouped into slices of equal axial coordinate
-    (structured meshes); in each slice the solid volume V_s gives the radius
-    r = sqrt(V_s/(pi dz)). The length integrates alpha along the row of
+    (structured meshes); in each slice the radius is where alpha falls
+    through 1/2 going out from the axis (linear between cell centres), so
+    traces and mist of the phase in the air do not count. The length integrates alpha along the row of
     cells next to the axis; the undeformed length is the part of the rod
     whose radius is within -tolerance (default 0.01) of the initial radius
     (-R0, default: the largest radius at the first time processed).
@@ -35,6 +39,8 @@ Usage
 #include "OFstream.H"
 #include "foamEigen.H"
 #include <map>
+#include <algorithm>
+#include <vector>
 
 namespace
 {
@@ -52,6 +58,29 @@ Foam::scalar meshAngle(const Foam::fvMesh& mesh)
         }
     }
     return constant::mathematical::twoPi;
+}
+
+// Radius of the body in one slice: where alpha falls through 1/2 going
+// out from the axis (linear between cell centres), so that traces and
+// mist of the phase further out do not count; 0 if the axis cell is
+// below 1/2
+Foam::scalar edgeRadius(std::vector<std::pair<Foam::scalar, Foam::scalar>>& row)
+{
+    std::sort(row.begin(), row.end());
+    if (row.empty() || row[0].second < 0.5)
+    {
+        return 0;
+    }
+    for (size_t i = 1; i < row.size(); ++i)
+    {
+        if (row[i].second < 0.5)
+        {
+            const Foam::scalar r0 = row[i - 1].first, a0 = row[i - 1].second;
+            const Foam::scalar r1 = row[i].first, a1 = row[i].second;
+            return r0 + (a0 - 0.5)/(a0 - a1)*(r1 - r0);
+        }
+    }
+    return row.back().first;
 }
 
 } // End anonymous namespace
@@ -87,8 +116,9 @@ int main(int argc, char *argv[])
     const fileName outDir(mesh.time().globalPath()/"postProcessing"/"rodProfile");
     mkDir(outDir);
     OFstream table(outDir/(phaseName + ".csv"));
-    table<< "t,length,maxRadius,undeformedLength,kinetic,elastic,"
-         << "plasticWork,internal,total" << nl;
+    table.precision(12);
+    table<< "t,length,maxRadius,undeformedLength,zMin,axialVelocity,"
+         << "kinetic,elastic,plasticWork,internal,total" << nl;
 
     forAll(timeDirs, timei)
     {
@@ -110,6 +140,7 @@ int main(int argc, char *argv[])
 
         // Slices of equal axial coordinate
         std::map<long long, scalar> solid, axisAlpha, axisR, zOf;
+        std::map<long long, std::vector<std::pair<scalar, scalar>>> rows;
         const scalar zScale = 1e-9*max(mag(mesh.bounds().span()), SMALL);
         forAll(C, celli)
         {
@@ -119,6 +150,7 @@ int main(int argc, char *argv[])
             const long long key = std::llround(z/zScale);
             zOf[key] = z;
             solid[key] += alpha[celli]*V[celli]*toFull;
+            rows[key].push_back({r, alpha[celli]});
             auto it = axisR.find(key);
             if (it == axisR.end() || r < it->second)
             {
@@ -137,7 +169,7 @@ int main(int argc, char *argv[])
         );
         profile<< "z,radius" << nl;
 
-        scalar length = 0, maxRadius = 0;
+        scalar length = 0, maxRadius = 0, zMin = GREAT;
         std::vector<scalar> radius(zs.size(), 0), dzs(zs.size(), 0);
         label i = 0;
         for (const auto& kv : zOf)
@@ -150,8 +182,13 @@ int main(int argc, char *argv[])
             else dz = 0.5*(zs[i + 1] - zs[i - 1]);
 
             dzs[i] = dz;
-            radius[i] = std::sqrt(solid[key]/(constant::mathematical::pi*dz));
+            radius[i] = edgeRadius(rows[key]);
             length += axisAlpha[key]*dz;
+            if (zMin == GREAT && axisAlpha[key] > 1e-3)
+            {
+                // The body fills the top of its first slice
+                zMin = zs[i] + 0.5*dz - axisAlpha[key]*dz;
+            }
             maxRadius = max(maxRadius, radius[i]);
             profile<< zs[i] << ',' << radius[i] << nl;
             ++i;
@@ -201,13 +238,27 @@ int main(int argc, char *argv[])
                 }
             }
         }
+        scalar bodyMass = 0, bodyMomentum = 0;
+        {
+            const scalarField& a = phases.alpha(k).primitiveField();
+            const scalarField& rho = phases.rho(k).primitiveField();
+            forAll(C, celli)
+            {
+                const scalar m = a[celli]*rho[celli]*V[celli];
+                bodyMass += m;
+                bodyMomentum += m*(U[celli] & axis);
+            }
+        }
+        const scalar axialVelocity = bodyMomentum/max(bodyMass, VSMALL);
+
         kinetic *= toFull;
         elastic *= toFull;
         plastic *= toFull;
         internal *= toFull;
 
         table<< runTime.value() << ',' << length << ',' << maxRadius << ','
-             << undeformed << ',' << kinetic << ',' << elastic << ','
+             << undeformed << ',' << zMin << ',' << axialVelocity << ','
+             << kinetic << ',' << elastic << ','
              << plastic << ',' << internal << ','
              << kinetic + elastic + internal << nl;
 

@@ -30,6 +30,7 @@ Foam::demSolver::demSolver
     mesh_(phases.mesh()),
     nPhases_(phases.size()),
     order_(schemeDict.getOrDefault<label>("order", 2)),
+    waveSpeeds_(HLLC::waveSpeeds::Davis),
     reconstructU_(schemeDict.getOrDefault<bool>("reconstructVelocity", true)),
     patchKinds_(mesh_.boundary().size(), patchKind::value),
     coupledLeft_(mesh_.boundary().size(), true),
@@ -65,6 +66,20 @@ Foam::demSolver::demSolver
         FatalIOErrorInFunction(schemeDict)
             << "Unknown riemannSolver " << solverName
             << "; valid: (HLLC)" << exit(FatalIOError);
+    }
+    const word speedsName
+    (
+        schemeDict.getOrDefault<word>("waveSpeeds", "Davis")
+    );
+    if (speedsName == "pressureBased")
+    {
+        waveSpeeds_ = HLLC::waveSpeeds::pressureBased;
+    }
+    else if (speedsName != "Davis")
+    {
+        FatalIOErrorInFunction(schemeDict)
+            << "Unknown waveSpeeds " << speedsName
+            << "; valid: (pressureBased Davis)" << exit(FatalIOError);
     }
     if (order_ != 1 && order_ != 2)
     {
@@ -744,6 +759,7 @@ void Foam::demSolver::solveFace
             L.E = sl.E;
             L.a = sl.a;
             L.cT = sl.cT;
+            L.G = phases_.phase(k).eos().fundamentalDerivative(sl.rho, sl.p);
             L.solid = sl.solid;
 
             Rs.rho = sr.rho;
@@ -752,47 +768,87 @@ void Foam::demSolver::solveFace
             Rs.E = sr.E;
             Rs.a = sr.a;
             Rs.cT = sr.cT;
+            Rs.G = phases_.phase(j).eos().fundamentalDerivative(sr.rho, sr.p);
             Rs.solid = sr.solid;
 
-            const riemannSolution sol = HLLC::solve(L, Rs);
+            const riemannSolution sol = HLLC::solve(L, Rs, waveSpeeds_);
 
             uFace += S*sol.uStar;
             wFace += S;
 
-            // One rule for both parts, including u* = 0
-            const bool fromLeft = (sol.uStar >= 0);
-            const int up = fromLeft ? k : j;
-
-            const cobasis::vector momFlux(R.transpose()*sol.momentumFlux);
-
-            // Conservative part: out of L, into R, for the upwind phase
-            faceResult_[up].dMass[0] -= S*sol.massFlux;
-            faceResult_[up].dMass[1] += S*sol.massFlux;
-            faceResult_[up].dMomentum[0] -= S*momFlux;
-            faceResult_[up].dMomentum[1] += S*momFlux;
-            faceResult_[up].dEnergy[0] -= S*sol.energyFlux;
-            faceResult_[up].dEnergy[1] += S*sol.energyFlux;
-
             const cobasis::vector vStarL(R.transpose()*sol.vStarL);
             const cobasis::vector vStarR(R.transpose()*sol.vStarR);
+            const cobasis::vector tStar(R.transpose()*sol.tStar);
 
-            if (k != j)
+            // Conservative and Lagrangian parts of the upwind side, with
+            // weight w; the flux is in the face frame
+            const auto apply = [&]
+            (
+                const bool fromLeft,
+                const double w,
+                const double massFlux,
+                const cobasis::vector& momentumFlux,
+                const double energyFlux
+            )
             {
-                // Lagrangian part in the receiving cell c
-                const int c = fromLeft ? 1 : 0;
-                const int invaded = fromLeft ? j : k;
-                const cobasis::vector tStar(R.transpose()*sol.tStar);
-                const cobasis::vector tc(fromLeft ? (-tStar).eval() : tStar);
-                const cobasis::vector& vStar = fromLeft ? vStarL : vStarR;
-                const double work = tc.dot(vStar);
-                const double du = std::abs(sol.uStar);
+                const int up = fromLeft ? k : j;
+                const double Sw = w*S;
+                const cobasis::vector momFlux(R.transpose()*momentumFlux);
 
-                faceResult_[up].dAlpha[c] += S*du;
-                faceResult_[invaded].dAlpha[c] -= S*du;
-                faceResult_[up].dMomentum[c] -= S*tc;
-                faceResult_[invaded].dMomentum[c] += S*tc;
-                faceResult_[up].dEnergy[c] -= S*work;
-                faceResult_[invaded].dEnergy[c] += S*work;
+                // Conservative part: out of L, into R, for the upwind phase
+                faceResult_[up].dMass[0] -= Sw*massFlux;
+                faceResult_[up].dMass[1] += Sw*massFlux;
+                faceResult_[up].dMomentum[0] -= Sw*momFlux;
+                faceResult_[up].dMomentum[1] += Sw*momFlux;
+                faceResult_[up].dEnergy[0] -= Sw*energyFlux;
+                faceResult_[up].dEnergy[1] += Sw*energyFlux;
+
+                if (k != j)
+                {
+                    // Lagrangian part in the receiving cell c
+                    const int c = fromLeft ? 1 : 0;
+                    const int invaded = fromLeft ? j : k;
+                    const cobasis::vector tc
+                    (
+                        fromLeft ? (-tStar).eval() : tStar
+                    );
+                    const cobasis::vector& vStar = fromLeft ? vStarL : vStarR;
+                    const double work = tc.dot(vStar);
+                    const double du = std::abs(sol.uStar);
+
+                    faceResult_[up].dAlpha[c] += Sw*du;
+                    faceResult_[invaded].dAlpha[c] -= Sw*du;
+                    faceResult_[up].dMomentum[c] -= Sw*tc;
+                    faceResult_[invaded].dMomentum[c] += Sw*tc;
+                    faceResult_[up].dEnergy[c] -= Sw*work;
+                    faceResult_[invaded].dEnergy[c] += Sw*work;
+                }
+            };
+
+            if (sol.uStar != 0 || k == j)
+            {
+                apply
+                (
+                    sol.uStar >= 0, 1,
+                    sol.massFlux, sol.momentumFlux, sol.energyFlux
+                );
+            }
+            else
+            {
+                // A contact at rest (the plane of a symmetric impact):
+                // half of each side's star flux (no mass, the traction,
+                // its work at that side's star velocity), so that the
+                // face has no preferred side
+                apply
+                (
+                    true, 0.5,
+                    0, sol.momentumFlux, -sol.tStar.dot(sol.vStarL)
+                );
+                apply
+                (
+                    false, 0.5,
+                    0, sol.momentumFlux, -sol.tStar.dot(sol.vStarR)
+                );
             }
 
             // Star velocity seen by each phase, for the cobasis
@@ -821,22 +877,36 @@ void Foam::demSolver::solveFace
 
     for (const minorPair& tp : minorPairs_)
     {
-        const bool fromLeft = (uFace >= 0);
-        const int up = fromLeft ? tp.k : tp.j;
-        const phaseSide& K = fromLeft ? sideL[tp.k] : sideR[tp.j];
-        const cobasis::vector s(K.sigma*n);
+        // Upwind side; at a face at rest half from each side
+        for (int side = 0; side < 2; ++side)
+        {
+            const bool fromLeft = (side == 0);
+            double w = 1;
+            if (uFace == 0)
+            {
+                w = 0.5;
+            }
+            else if (fromLeft != (uFace > 0))
+            {
+                continue;
+            }
+            const int up = fromLeft ? tp.k : tp.j;
+            const phaseSide& K = fromLeft ? sideL[tp.k] : sideR[tp.j];
+            const cobasis::vector s(K.sigma*n);
+            const double S = w*tp.S;
+
+            const double massFlux = K.rho*uFace;
+            const cobasis::vector momFlux(massFlux*K.U - s);
+            const double energyFlux = massFlux*K.E - s.dot(K.U);
+
+            faceResult_[up].dMass[0] -= S*massFlux;
+            faceResult_[up].dMass[1] += S*massFlux;
+            faceResult_[up].dMomentum[0] -= S*momFlux;
+            faceResult_[up].dMomentum[1] += S*momFlux;
+            faceResult_[up].dEnergy[0] -= S*energyFlux;
+            faceResult_[up].dEnergy[1] += S*energyFlux;
+        }
         const double S = tp.S;
-
-        const double massFlux = K.rho*uFace;
-        const cobasis::vector momFlux(massFlux*K.U - s);
-        const double energyFlux = massFlux*K.E - s.dot(K.U);
-
-        faceResult_[up].dMass[0] -= S*massFlux;
-        faceResult_[up].dMass[1] += S*massFlux;
-        faceResult_[up].dMomentum[0] -= S*momFlux;
-        faceResult_[up].dMomentum[1] += S*momFlux;
-        faceResult_[up].dEnergy[0] -= S*energyFlux;
-        faceResult_[up].dEnergy[1] += S*energyFlux;
 
         const phaseSide& sl = sideL[tp.k];
         const phaseSide& sr = sideR[tp.j];

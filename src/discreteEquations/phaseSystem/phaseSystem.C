@@ -155,6 +155,7 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
     (
         dict_.getOrDefault<scalar>("massFractionMinor", 1e-6)
     ),
+    pVacuum_(dict_.getOrDefault<scalar>("pVacuum", -1)),
     U_
     (
         IOobject
@@ -247,6 +248,9 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
     const label N = phaseNames_.size();
     phases_.setSize(N);
     plastic_.setSize(N);
+    isentropicRelaxation_.setSize(N, false);
+    isentrope_.setSize(N);
+    pCavitation_.setSize(N);
     alpha_.setSize(N);
     rho_.setSize(N);
     p_.setSize(N);
@@ -269,6 +273,70 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
         const dictionary& phaseDict = dict_.subDict(name);
 
         phases_.set(k, new hyperelasticPhase(name, phaseDict));
+
+        const word path
+        (
+            phaseDict.getOrDefault<word>
+            (
+                "pressureRelaxation", "constantPressure"
+            )
+        );
+        if (path != "constantPressure" && path != "isentropic")
+        {
+            FatalIOErrorInFunction(phaseDict)
+                << "Phase " << name << ": unknown pressureRelaxation "
+                << path << "; valid: (constantPressure isentropic)"
+                << exit(FatalIOError);
+        }
+        if (path == "isentropic" && phases_[k].solid())
+        {
+            FatalIOErrorInFunction(phaseDict)
+                << "Phase " << name << ": pressureRelaxation isentropic is"
+                << " for fluids only" << exit(FatalIOError);
+        }
+        isentropicRelaxation_[k] = (path == "isentropic");
+        isentrope_[k] = Pair<scalar>(-1, 0);
+        pCavitation_[k] = -GREAT;
+        if (phaseDict.found("cavitationPressure"))
+        {
+            pCavitation_[k] = phaseDict.get<scalar>("cavitationPressure");
+            if
+            (
+                !isentropicRelaxation_[k]
+             || !(pCavitation_[k] > phases_[k].eos().pMin())
+            )
+            {
+                FatalIOErrorInFunction(phaseDict)
+                    << "Phase " << name << ": cavitationPressure "
+                    << pCavitation_[k] << " needs pressureRelaxation"
+                    << " isentropic and a value above "
+                    << phases_[k].eos().pMin() << exit(FatalIOError);
+            }
+        }
+        if (phaseDict.found("referenceIsentrope"))
+        {
+            const Pair<scalar> ref
+            (
+                phaseDict.get<Pair<scalar>>("referenceIsentrope")
+            );
+            if
+            (
+                !isentropicRelaxation_[k] || !(ref.first() > 0)
+             || !(ref.second() > phases_[k].eos().pMin())
+            )
+            {
+                FatalIOErrorInFunction(phaseDict)
+                    << "Phase " << name << ": referenceIsentrope " << ref
+                    << " needs pressureRelaxation isentropic, rho > 0 and"
+                    << " p > " << phases_[k].eos().pMin()
+                    << exit(FatalIOError);
+            }
+            isentrope_[k] = Pair<scalar>
+            (
+                ref.first(),
+                phases_[k].eos().e(ref.first(), ref.second())
+            );
+        }
 
         if (phases_[k].solid())
         {

@@ -13,8 +13,39 @@ Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
     v0_(nPhases_),
     eh0_(nPhases_),
     alpha_(nPhases_),
-    trace_(nPhases_)
+    trace_(nPhases_),
+    isentropic_(nPhases_, false),
+    nVacuum_(0)
 {}
+
+
+Foam::scalar Foam::mechanicalRelaxation::relaxedVolume
+(
+    const label k,
+    const scalar pStar
+) const
+{
+    const equationOfState& eos = phases_.phase(k).eos();
+    if (isentropic_[k])
+    {
+        const Pair<scalar> s0(isentropeStart(k));
+        return eos.vIsentropic
+        (
+            max(pStar, phases_.cavitationPressure(k)), s0.first(), s0.second()
+        );
+    }
+    return eos.vRelaxed(pStar, 1/v0_[k], eh0_[k]);
+}
+
+
+Foam::Pair<Foam::scalar> Foam::mechanicalRelaxation::isentropeStart
+(
+    const label k
+) const
+{
+    const Pair<scalar>& ref = phases_.referenceIsentrope(k);
+    return ref.first() > 0 ? ref : Pair<scalar>(1/v0_[k], eh0_[k]);
+}
 
 
 bool Foam::mechanicalRelaxation::interfacePressure
@@ -34,7 +65,11 @@ bool Foam::mechanicalRelaxation::interfacePressure
         if (trace_[k]) continue;
         const equationOfState& eos = phases_.phase(k).eos();
         const scalar pk = eos.p(1/v0_[k], eh0_[k]);
-        lo = max(lo, eos.pMin());
+        if (!(isentropic_[k] && phases_.cavitationPressure(k) > eos.pMin()))
+        {
+            // v_k(p) grows without bound as p -> pMin
+            lo = max(lo, eos.pMin());
+        }
         pScale = max(pScale, eos.pScale(pk));
         pGuess += alpha_[k]*pk;
         wGuess += alpha_[k];
@@ -49,8 +84,23 @@ bool Foam::mechanicalRelaxation::interfacePressure
         {
             if (trace_[k]) continue;
             const equationOfState& eos = phases_.phase(k).eos();
-            f += m_[k]*eos.vRelaxed(pp, 1/v0_[k], eh0_[k]);
-            dF += m_[k]*eos.dvRelaxeddp(pp, 1/v0_[k], eh0_[k]);
+            if (isentropic_[k])
+            {
+                const Pair<scalar> s0(isentropeStart(k));
+                const scalar pc = phases_.cavitationPressure(k);
+                f += m_[k]*eos.vIsentropic(max(pp, pc), s0.first(), s0.second());
+                if (pp > pc)
+                {
+                    dF +=
+                        m_[k]
+                       *eos.dvIsentropicdp(pp, s0.first(), s0.second());
+                }
+            }
+            else
+            {
+                f += m_[k]*eos.vRelaxed(pp, 1/v0_[k], eh0_[k]);
+                dF += m_[k]*eos.dvRelaxeddp(pp, 1/v0_[k], eh0_[k]);
+            }
         }
         return f;
     };
@@ -58,6 +108,9 @@ bool Foam::mechanicalRelaxation::interfacePressure
     p = pGuess/wGuess;
     if (!(p > lo)) p = lo + 1e-6*max(pScale, scalar(1));
 
+    // Newton steps that do not shrink (a zigzag about the kink of a fluid
+    // held at its cavitation pressure) give way to bisection
+    scalar stepOld = GREAT;
     for (int iter = 0; iter < 300; ++iter)
     {
         scalar dF;
@@ -69,7 +122,9 @@ bool Foam::mechanicalRelaxation::interfacePressure
         if (f > 0) lo = p; else hi = p;
 
         scalar pNew = p - f/dF;
-        if (!(pNew > lo && pNew < hi))
+        const bool stalled = mag(pNew - p) > 0.5*stepOld && hi < GREAT;
+        stepOld = mag(pNew - p);
+        if (!(pNew > lo && pNew < hi) || stalled)
         {
             // Bisect, or expand when no upper bound is known yet
             pNew =
@@ -88,6 +143,120 @@ bool Foam::mechanicalRelaxation::interfacePressure
 }
 
 
+bool Foam::mechanicalRelaxation::vacuumFloor(const label k)
+{
+    // The fluid k is set to pMin + pVacuum at its density; the energy this
+    // takes comes from the heaviest other phase that is not a trace, if any
+    label payer = -1;
+    for (label j = 0; j < nPhases_; ++j)
+    {
+        if (j != k && !trace_[j] && (payer < 0 || m_[j] > m_[payer]))
+        {
+            payer = j;
+        }
+    }
+    const equationOfState& eos = phases_.phase(k).eos();
+    const scalar eFloor = eos.e(1/v0_[k], eos.pMin() + phases_.pVacuum());
+    if (payer >= 0)
+    {
+        eh0_[payer] -= m_[k]*(eFloor - eh0_[k])/m_[payer];
+    }
+    // else: the fluid is alone (the other phases traces) and the floor
+    // adds at most alpha pVacuum/(gamma - 1) per unit volume
+    eh0_[k] = eFloor;
+    ++nVacuum_;
+    return true;
+}
+
+
+bool Foam::mechanicalRelaxation::relaxPressure
+(
+    const label c,
+    demSolver::conservedState& q,
+    const scalar traceVolume,
+    scalar& pStar
+)
+{
+    // Fluids on their isentrope, when a phase on the default path
+    // (the heaviest such, the payer) takes the energy difference and
+    // outweighs them
+    label payer = -1;
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if
+        (
+            !trace_[k] && !phases_.isentropicRelaxation(k)
+         && (payer < 0 || m_[k] > m_[payer])
+        )
+        {
+            payer = k;
+        }
+    }
+    // The payer must outweigh the fluids it pays for: where the fluid is
+    // the heavier (air with a few metal fragments) the energy difference
+    // would overheat or freeze the light payer, and the default path is
+    // used
+    scalar mIsentropic = 0;
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if (!trace_[k] && phases_.isentropicRelaxation(k))
+        {
+            mIsentropic += m_[k];
+        }
+    }
+    const bool useIsentropes = payer >= 0 && m_[payer] > mIsentropic;
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        isentropic_[k] =
+            useIsentropes && !trace_[k]
+         && phases_.isentropicRelaxation(k);
+    }
+
+    if (!interfacePressure(1 - traceVolume, pStar))
+    {
+        return false;
+    }
+
+    scalar sumActive = 0;
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if (trace_[k]) continue;
+        alpha_[k] = m_[k]*relaxedVolume(k, pStar);
+        sumActive += alpha_[k];
+    }
+    scalar toPayer = 0;
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if (trace_[k]) continue;
+        alpha_[k] *= (1 - traceVolume)/sumActive;
+        const scalar v = alpha_[k]/m_[k];
+        const scalar eConstantP = eh0_[k] - pStar*(v - v0_[k]);
+        if (isentropic_[k])
+        {
+            eh0_[k] = phases_.phase(k).eos().e
+            (
+                1/v, max(pStar, phases_.cavitationPressure(k))
+            );
+            toPayer += m_[k]*(eConstantP - eh0_[k]);
+        }
+        else
+        {
+            eh0_[k] = eConstantP;
+        }
+        if (phases_.phase(k).solid())
+        {
+            q.A[k][c] *= std::cbrt(v0_[k]/v);
+        }
+        v0_[k] = v;
+    }
+    if (payer >= 0)
+    {
+        eh0_[payer] += toPayer/m_[payer];
+    }
+    return true;
+}
+
+
 Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
 (
     demSolver::conservedState& q,
@@ -95,6 +264,7 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
 )
 {
     stateError err;
+    nVacuum_ = 0;
     const auto fail = [&err](label c, label k, const char* what, scalar v)
     {
         if (!err.failed)
@@ -163,6 +333,27 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
             mom += q.momentum[k][c];
         }
 
+        // A fluid on a reference isentrope holding less than
+        // massFractionMinor of the cell's mass is a trace too, whatever its
+        // volume: air inside a metal (numerical diffusion leaves such
+        // tails) would otherwise take part in the pressure relaxation and
+        // cavitate under the metal's tensile release waves, a gas holding
+        // no tension, and the near-vacuum bubble would keep growing. As a
+        // trace it stays on its isentrope (cold), see 4. below. A heavy
+        // minor phase (metal debris in air) stays active: resetting it as a
+        // trace would hand its energy to the light phase
+        for (label k = 0; k < nPhases_; ++k)
+        {
+            if
+            (
+                phases_.referenceIsentrope(k).first() > 0
+             && m_[k] < phases_.massFractionMinor()*mass
+            )
+            {
+                trace_[k] = true;
+            }
+        }
+
         // 2. Velocity relaxation
         const cobasis::vector u(mom/mass);
 
@@ -209,6 +400,12 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
                 {
                     trace_[k] = true;
                 }
+                else if
+                (
+                    phases_.pVacuum() >= 0 && !phases_.phase(k).solid()
+                 && vacuumFloor(k)
+                )
+                {}
                 else
                 {
                     fail(c, k, "p", pk);
@@ -232,33 +429,10 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
         scalar pStar;
         if (nActive > 1)
         {
-            if (!interfacePressure(1 - traceVolume, pStar))
+            if (!relaxPressure(c, q, traceVolume, pStar))
             {
                 fail(c, main, "interface pressure (no convergence)", pStar);
                 continue;
-            }
-
-            scalar sumActive = 0;
-            for (label k = 0; k < nPhases_; ++k)
-            {
-                if (trace_[k]) continue;
-                alpha_[k] = m_[k]*phases_.phase(k).eos().vRelaxed
-                (
-                    pStar, 1/v0_[k], eh0_[k]
-                );
-                sumActive += alpha_[k];
-            }
-            for (label k = 0; k < nPhases_; ++k)
-            {
-                if (trace_[k]) continue;
-                alpha_[k] *= (1 - traceVolume)/sumActive;
-                const scalar v = alpha_[k]/m_[k];
-                eh0_[k] -= pStar*(v - v0_[k]);
-                if (phases_.phase(k).solid())
-                {
-                    q.A[k][c] *= std::cbrt(v0_[k]/v);
-                }
-                v0_[k] = v;
             }
         }
         else
@@ -278,27 +452,71 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
             {
                 q.A[k][c] = cobasis::unstrained(rho, ph.rho0());
             }
-            const scalar eNew = ph.eos().e(rho, pk);
+            // A fluid with a reference isentrope stays on it (a trace of
+            // air inside a metal at the metal's pressure, 1e8-1e9 Pa, and
+            // its own tiny density would hold 1e12 J/kg, and the metal
+            // would pay for it every step)
+            const Pair<scalar>& ref = phases_.referenceIsentrope(k);
+            const scalar eNew =
+                ref.first() > 0
+              ? ph.eos().eIsentropic(rho, ref.first(), ref.second())
+              : ph.eos().e(rho, pk);
             eh0_[main] -= m_[k]*(eNew - eh0_[k] - eeOld)/m_[main];
             eh0_[k] = eNew;
         }
 
-        // 5. Plastic relaxation, 6. checks, store
-        Ufield[c] = vector(u(0), u(1), u(2));
+        // 5. Plastic relaxation. Its heat raises the pressure of the
+        //    solid; in a mixed cell the pressures are relaxed once more, or
+        //    the next step would start out of equilibrium and the solid
+        //    would push the heat into its neighbours (a light gas next to
+        //    a yielding metal took it all and reached 1e5 K)
+        bool heated = false;
         for (label k = 0; k < nPhases_; ++k)
         {
             const hyperelasticPhase& ph = phases_.phase(k);
-            cobasis::matrix& A = q.A[k][c];
-
             if (ph.solid() && !trace_[k])
             {
                 const scalar heat = phases_.plastic(k).correct
                 (
-                    A, phases_.epsilonP(k)[c], ph.elastic(), dt
+                    q.A[k][c], phases_.epsilonP(k)[c], ph.elastic(), dt
                 );
                 eh0_[k] += heat;
                 phases_.plasticWork(k)[c] += heat;
+                heated = heated || heat > 0;
             }
+        }
+        if (heated && nActive > 1)
+        {
+            if (!relaxPressure(c, q, traceVolume, pStar))
+            {
+                fail(c, main, "interface pressure (no convergence)", pStar);
+                continue;
+            }
+        }
+
+        // A fluid that the pressure relaxation took to the edge of its
+        // admissible range (a gas opened up by a solid in tension: p* at
+        // pMin to round-off)
+        for (label k = 0; k < nPhases_; ++k)
+        {
+            const equationOfState& eos = phases_.phase(k).eos();
+            if
+            (
+                phases_.pVacuum() >= 0 && !trace_[k]
+             && !phases_.phase(k).solid()
+             && !(eos.p(1/v0_[k], eh0_[k]) > eos.pMin())
+            )
+            {
+                vacuumFloor(k);
+            }
+        }
+
+        // 6. Checks, store
+        Ufield[c] = vector(u(0), u(1), u(2));
+        for (label k = 0; k < nPhases_; ++k)
+        {
+            const hyperelasticPhase& ph = phases_.phase(k);
+            const cobasis::matrix& A = q.A[k][c];
 
             const scalar rho = 1/v0_[k];
             const scalar p = ph.eos().p(rho, eh0_[k]);

@@ -12,32 +12,70 @@ inline double guard(const double d)
     return std::abs(d) > tiny ? d : (d < 0 ? -tiny : tiny);
 }
 
+
+//- Contact speed S* of the HLLC solution for the given bounds
+inline double contactSpeed
+(
+    const Foam::riemannState& L,
+    const Foam::riemannState& R,
+    const double SL,
+    const double SR,
+    double& mL,
+    double& mR
+)
+{
+    // Longitudinal impedances m_K = rho_K (u_K - S_K): mL > 0 > mR
+    mL = L.rho*(L.v(0) - SL);
+    mR = R.rho*(R.v(0) - SR);
+    // S* = [s_Ln - s_Rn + rho_L u_L (S_L - u_L) - rho_R u_R (S_R - u_R)]
+    //    / [rho_L (S_L - u_L) - rho_R (S_R - u_R)]
+    return (L.s(0) - R.s(0) - mL*L.v(0) + mR*R.v(0))/guard(mR - mL);
+}
+
 } // End anonymous namespace
 
 
 Foam::riemannSolution Foam::HLLC::solve
 (
     const riemannState& L,
-    const riemannState& R
+    const riemannState& R,
+    const waveSpeeds estimate
 )
 {
     const double uL = L.v(0);
     const double uR = R.v(0);
 
-    // Davis estimates
-    const double SL = std::min(uL - L.a, uR - R.a);
-    const double SR = std::max(uL + L.a, uR + R.a);
+    // Davis bounds
+    const double SLDavis = std::min(uL - L.a, uR - R.a);
+    const double SRDavis = std::max(uL + L.a, uR + R.a);
 
-    // Longitudinal impedances m_K = rho_K (u_K - S_K): mL > 0 > mR
-    const double mL = L.rho*(uL - SL);
-    const double mR = R.rho*(uR - SR);
+    double SL = SLDavis, SR = SRDavis;
+    if (estimate == waveSpeeds::pressureBased)
+    {
+        // Acoustic contact pressure between the two impedances (pressure
+        // = minus the normal traction)
+        const double ZL = L.rho*L.a, ZR = R.rho*R.a;
+        const double pL = -L.s(0), pR = -R.s(0);
+        const double pStar =
+            (ZR*pL + ZL*pR + ZL*ZR*(uL - uR))/guard(ZL + ZR);
+        const double qL =
+            pStar > pL ? std::sqrt(1 + L.G*(pStar - pL)/guard(ZL*L.a)) : 1;
+        const double qR =
+            pStar > pR ? std::sqrt(1 + R.G*(pStar - pR)/guard(ZR*R.a)) : 1;
+        SL = uL - qL*L.a;
+        SR = uR + qR*R.a;
+    }
+
+    double mL, mR;
+    double Sstar = contactSpeed(L, R, SL, SR, mL, mR);
+    if (!(SL < Sstar && Sstar < SR))
+    {
+        SL = std::min(SL, SLDavis);
+        SR = std::max(SR, SRDavis);
+        Sstar = contactSpeed(L, R, SL, SR, mL, mR);
+    }
 
     riemannSolution sol;
-
-    // S* = [s_Ln - s_Rn + rho_L u_L (S_L - u_L) - rho_R u_R (S_R - u_R)]
-    //    / [rho_L (S_L - u_L) - rho_R (S_R - u_R)]
-    const double Sstar =
-        (L.s(0) - R.s(0) - mL*uL + mR*uR)/guard(mR - mL);
     sol.uStar = Sstar;
 
     // Normal star traction

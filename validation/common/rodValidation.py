@@ -1,0 +1,264 @@
+"""Shared pieces of the copper rod validations (VALIDATION.md W1, W2, W4):
+running a tutorial copy at a cell size, reading rodProfile's tables,
+reference numbers, Taylor's estimate, plots and the markdown report.
+
+Standard library plus numpy and matplotlib (Debian's /usr/bin/python3).
+"""
+import csv
+import math
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
+TUTORIALS = os.path.join(ROOT, "tutorials", "impactFoam")
+
+# W1 (VALIDATION.md): the copper bar and its reference band
+L0 = 32.4e-3          # m
+R0 = 3.2e-3           # m
+V0 = 227.0            # m/s
+RHO = 8930.0          # kg/m^3
+SIGMA_Y = 4e8         # Pa (initial yield; hardening 1e8 Pa)
+L_BAND = (21.42e-3, 21.47e-3)
+R_BAND = (7.0e-3, 7.1e-3)
+L_TOL = 0.02          # final length within 2 % of the band
+R_TOL = 0.05          # mushroom radius within 5 % of the band
+W2_TOL = 0.01         # rod-on-rod within 1 % of the Taylor bar
+W4_TOL = 0.20         # Taylor's apparent yield within 20 % of sigma_Y
+
+
+def band_error(value, band):
+    """Relative distance of value from the band [lo, hi] (0 inside)."""
+    lo, hi = band
+    if value < lo:
+        return (value - lo) / lo
+    if value > hi:
+        return (value - hi) / hi
+    return 0.0
+
+
+def taylor_yield(L1, X, V=V0, rho=RHO, L=L0):
+    """Taylor's rigid-plastic estimate of the dynamic yield stress:
+    sigma/(rho V^2) = (L0 - X)/(2 (L0 - L1) ln(L0/X))."""
+    return rho * V * V * (L - X) / (2.0 * (L - L1) * math.log(L / X))
+
+
+def progress(msg):
+    sys.stdout.write(msg + "\n")
+    sys.stdout.flush()
+
+
+def copy_case(tutorial, dest):
+    """A clean copy of a tutorial (no mesh, time directories or logs)."""
+    src = os.path.join(TUTORIALS, tutorial)
+    if os.path.exists(dest):
+        shutil.rmtree(dest)
+
+    def ignore(directory, names):
+        skip = set()
+        if os.path.samefile(directory, src):
+            for n in names:
+                if n[0].isdigit() and n != "0.orig" or n.startswith("log.") \
+                        or n.startswith("processor") \
+                        or n in ("postProcessing", "VTK"):
+                    skip.add(n)
+        return skip
+
+    shutil.copytree(src, dest, ignore=ignore)
+    return dest
+
+
+def set_velocity(case, speed):
+    """Scale the rod velocities of setFieldsDict to +/- speed."""
+    path = os.path.join(case, "system", "setFieldsDict")
+    with open(path) as f:
+        text = f.read()
+    text = text.replace("(-227 0 0)", "(-%g 0 0)" % speed)
+    text = text.replace("(227 0 0)", "(%g 0 0)" % speed)
+    with open(path, "w") as f:
+        f.write(text)
+
+
+def run_case(case, h_mm, np_=1, end=None, label=""):
+    """./Allrun -h h [-np N] [-end t] in case, with a progress line from the
+    solver log every 20 s. Returns the wall time in s."""
+    cmd = ["./Allrun", "-h", "%g" % h_mm]
+    if np_ > 1:
+        cmd += ["-np", str(np_)]
+    if end:
+        cmd += ["-end", "%g" % end]
+    t0 = time.time()
+    log = open(os.path.join(case, "log.Allrun"), "w")
+    proc = subprocess.Popen(cmd, cwd=case, stdout=log,
+                            stderr=subprocess.STDOUT)
+    end_time = end or 80e-6
+    last = 0
+    while proc.poll() is None:
+        time.sleep(2)
+        if time.time() - last > 20:
+            last = time.time()
+            t = solver_time(case)
+            if t is not None:
+                progress("  %s h = %g mm: t = %5.1f us of %g us (%3.0f %%), "
+                         "%4.0f s elapsed"
+                         % (label, h_mm, t * 1e6, end_time * 1e6,
+                            100 * t / end_time, time.time() - t0))
+    log.close()
+    if proc.returncode != 0:
+        with open(os.path.join(case, "log.Allrun")) as f:
+            tail = f.read()[-3000:]
+        raise RuntimeError("Allrun failed in %s:\n%s" % (case, tail))
+    return time.time() - t0
+
+
+def solver_time(case):
+    """Latest 'Time = ' of log.impactFoam, or None."""
+    path = os.path.join(case, "log.impactFoam")
+    try:
+        with open(path, "rb") as f:
+            f.seek(0, 2)
+            size = f.tell()
+            f.seek(max(0, size - 4000))
+            tail = f.read().decode(errors="replace")
+    except OSError:
+        return None
+    t = None
+    for line in tail.splitlines():
+        if line.startswith("Time = "):
+            try:
+                t = float(line.split()[2])
+            except (IndexError, ValueError):
+                pass
+    return t
+
+
+def read_table(case, phase="copper"):
+    """rodProfile's table as a dict of lists (floats)."""
+    path = os.path.join(case, "postProcessing", "rodProfile", phase + ".csv")
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    return {k: [float(r[k]) for r in rows] for k in rows[0]}
+
+
+def read_profile(case, time_name, phase="copper"):
+    """z, r of the rod profile at a time directory name."""
+    path = os.path.join(case, "postProcessing", "rodProfile", time_name,
+                        "profile_" + phase + ".csv")
+    z, r = [], []
+    with open(path) as f:
+        for row in csv.DictReader(f):
+            z.append(float(row["z"]))
+            r.append(float(row["radius"]))
+    return z, r
+
+
+def last_time_name(case):
+    names = [n for n in os.listdir(os.path.join(case, "postProcessing",
+                                                "rodProfile"))
+             if n[0].isdigit()]
+    return max(names, key=float)
+
+
+def read_measured(path):
+    """A user's measured profiles: CSV with columns t, length, diameter
+    (SI units; header names containing 't', 'length', 'diam')."""
+    with open(path) as f:
+        rows = list(csv.reader(f))
+    head = [h.strip().lower() for h in rows[0]]
+
+    def col(key):
+        for i, h in enumerate(head):
+            if key in h:
+                return i
+        raise ValueError("%s: no column with '%s' in %s" % (path, key, head))
+    it, il, idia = col("t"), col("length"), col("diam")
+    data = [(float(r[it]), float(r[il]), float(r[idia])) for r in rows[1:]
+            if r]
+    return data
+
+
+def plot_histories(runs, png, title, measured=None, per_rod=1.0):
+    """L(t) and R(t) of several runs [(label, table)] against the band."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
+    for label, tab in runs:
+        t = [x * 1e6 for x in tab["t"]]
+        ax[0].plot(t, [x * 1e3 / per_rod for x in tab["length"]], label=label)
+        ax[1].plot(t, [x * 1e3 for x in tab["maxRadius"]], label=label)
+    for a, band, name in ((ax[0], L_BAND, "length"),
+                          (ax[1], R_BAND, "radius")):
+        a.axhspan(band[0] * 1e3, band[1] * 1e3, color="0.8",
+                  label="reference band (final)")
+        a.set_xlabel("t [us]")
+        a.set_ylabel("%s [mm]" % name)
+        a.grid(True, alpha=0.3)
+    if measured:
+        ax[0].plot([m[0] * 1e6 for m in measured],
+                   [m[1] * 1e3 / per_rod for m in measured], "ko",
+                   label="measured")
+        ax[1].plot([m[0] * 1e6 for m in measured],
+                   [m[2] * 0.5e3 for m in measured], "ko", label="measured")
+    ax[0].set_title("rod length" + (" (per rod)" if per_rod != 1 else ""))
+    ax[1].set_title("mushroom radius")
+    ax[0].legend(fontsize=8)
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+
+
+def plot_profiles(profiles, png, title):
+    """Final profiles r(z) [(label, z, r)]."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(8, 3.6))
+    for label, z, r in profiles:
+        ax.plot([x * 1e3 for x in z], [x * 1e3 for x in r], label=label)
+    ax.axhline(R0 * 1e3, color="0.6", ls=":", label="R0")
+    ax.set_xlabel("z [mm]")
+    ax.set_ylabel("r [mm]")
+    ax.set_title(title)
+    ax.set_aspect("equal")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+
+
+def plot_convergence(hs, Ls, Rs, png, title):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(1, 2, figsize=(10, 3.8))
+    ax[0].plot(hs, [x * 1e3 for x in Ls], "o-")
+    ax[0].axhspan(L_BAND[0] * 1e3, L_BAND[1] * 1e3, color="0.8")
+    ax[0].set_ylabel("final length [mm]")
+    ax[1].plot(hs, [x * 1e3 for x in Rs], "o-")
+    ax[1].axhspan(R_BAND[0] * 1e3, R_BAND[1] * 1e3, color="0.8")
+    ax[1].set_ylabel("mushroom radius [mm]")
+    for a in ax:
+        a.set_xlabel("cell size h [mm]")
+        a.invert_xaxis()
+        a.grid(True, alpha=0.3)
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+
+
+def converging(values):
+    """Mesh convergence of a sequence from coarse to fine: the changes
+    between successive meshes shrink (or the last is below 0.5 %). None
+    when fewer than three meshes were run."""
+    if len(values) < 3:
+        return None
+    d1 = abs(values[-2] - values[-3])
+    d2 = abs(values[-1] - values[-2])
+    return d2 <= d1 or d2 <= 0.005 * abs(values[-1])
