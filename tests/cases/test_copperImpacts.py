@@ -128,13 +128,13 @@ def main():
                % (len(times), float(times[-1])*1e6, worst["alpha"],
                   worst["U"], worst["p"], worst["sigmaEq"], dL.max(),
                   dR.max()))
-    # KNOWN FAILURE (issue 4 note): the full-domain run does not reproduce
-    # the half problem: the rod lengths agree to 2e-6 but the mushroom
-    # radius on the symmetry plane is up to 5 % smaller than at the slip
-    # wall by 20 us, and the air at the corner is not mirror-symmetric
-    # (round-off grows about tenfold per step there). Reported here, not
-    # counted, until the cause is found, so that the rest of the suite
-    # can land.
+    # KNOWN FAILURE (issue 4 note): the full-domain run reproduces the half
+    # problem to 1e-6 (rod length 3e-8, mushroom radius 8e-7) only up to
+    # about 6 us; then the difference grows (radius 5e-3 by 20 us): the
+    # full-domain run is not bitwise mirror-symmetric, and at the corner
+    # where the mushroom meets the air round-off grows about tenfold per
+    # step. Reported here, not counted, until that amplification is found,
+    # so that the rest of the suite can land.
     checks.note("KNOWN FAILURE rodOnRod_half: " + summary)
     checks.exit()
 

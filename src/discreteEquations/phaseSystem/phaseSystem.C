@@ -26,6 +26,24 @@ Foam::wordList Foam::phaseSystem::derivedPatchTypes() const
 }
 
 
+Foam::wordList Foam::phaseSystem::mirrorPatchTypes() const
+{
+    // As derivedPatchTypes, and slip where U is slip: the cobasis of the
+    // mirrored state is M A M (M = I - 2 n n), and its component gradients
+    // must see that (zeroGradient gave the off-diagonal rows of A at a slip
+    // wall the wrong sign)
+    wordList types(derivedPatchTypes());
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (U_.boundaryField()[patchi].type() == "slip")
+        {
+            types[patchi] = "slip";
+        }
+    }
+    return types;
+}
+
+
 void Foam::phaseSystem::checkFieldNames() const
 {
     const fileName dir(mesh_.time().timePath());
@@ -430,7 +448,7 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
                     AIO,
                     mesh,
                     dimensionedTensor("I", dimless, tensor::I),
-                    derivedPatchTypes()
+                    mirrorPatchTypes()
                 )
             );
         }
