@@ -217,14 +217,14 @@ def plot_profiles(profiles, png, title):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(8, 3.6))
+    fig, ax = plt.subplots(figsize=(9, 3.2))
     for label, z, r in profiles:
         ax.plot([x * 1e3 for x in z], [x * 1e3 for x in r], label=label)
     ax.axhline(R0 * 1e3, color="0.6", ls=":", label="R0")
     ax.set_xlabel("z [mm]")
     ax.set_ylabel("r [mm]")
     ax.set_title(title)
-    ax.set_aspect("equal")
+    ax.set_ylim(0, 8)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
