@@ -13,9 +13,8 @@ Checks:
   clayImpact_rebound   the ball bounces: V goes from -v through 0 to a
                        maximum of at least 0.5 v (a "sizeable fraction" of
                        the impact speed; Hertz: 1; the coarse run gives
-                       about 0.68, part of the elastic energy being held by
-                       the wall, which keeps the ball's diffuse edge in
-                       tension as it leaves)
+                       about 0.66: the wall keeps the ball's diffuse edge
+                       in tension as it leaves)
   clayImpact_energy    total energy (kinetic + elastic + internal, all
                        phases; nothing crosses the closed box) conserved:
                        max |E(t) - E(0)| <= 1 % of the ball's initial
