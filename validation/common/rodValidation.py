@@ -7,14 +7,14 @@ Standard library plus numpy and matplotlib (Debian's /usr/bin/python3).
 import csv
 import math
 import os
-import shutil
 import subprocess
 import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
-TUTORIALS = os.path.join(ROOT, "tutorials", "impactFoam")
+sys.path.insert(0, os.path.join(ROOT, "tests", "lib"))
+import foamcase as fc  # noqa: E402
 
 # W1 (VALIDATION.md): the copper bar and its reference band
 L0 = 32.4e-3          # m
@@ -52,23 +52,10 @@ def progress(msg):
 
 
 def copy_case(tutorial, dest):
-    """A clean copy of a tutorial (no mesh, time directories or logs)."""
-    src = os.path.join(TUTORIALS, tutorial)
-    if os.path.exists(dest):
-        shutil.rmtree(dest)
-
-    def ignore(directory, names):
-        skip = set()
-        if os.path.samefile(directory, src):
-            for n in names:
-                if n[0].isdigit() and n != "0.orig" or n.startswith("log.") \
-                        or n.startswith("processor") \
-                        or n in ("postProcessing", "VTK"):
-                    skip.add(n)
-        return skip
-
-    shutil.copytree(src, dest, ignore=ignore)
-    return dest
+    """A clean copy of a tutorial at dest (tests/lib/foamcase's
+    copy_tutorial: no mesh, time directories or logs)."""
+    return fc.copy_tutorial(tutorial, os.path.basename(dest),
+                            os.path.dirname(dest))
 
 
 def set_velocity(case, speed):

@@ -793,15 +793,12 @@ void Foam::demSolver::solveFace
             {
                 const int up = fromLeft ? k : j;
                 const double Sw = w*S;
-                const cobasis::vector momFlux(R.transpose()*momentumFlux);
 
-                // Conservative part: out of L, into R, for the upwind phase
-                faceResult_[up].dMass[0] -= Sw*massFlux;
-                faceResult_[up].dMass[1] += Sw*massFlux;
-                faceResult_[up].dMomentum[0] -= Sw*momFlux;
-                faceResult_[up].dMomentum[1] += Sw*momFlux;
-                faceResult_[up].dEnergy[0] -= Sw*energyFlux;
-                faceResult_[up].dEnergy[1] += Sw*energyFlux;
+                // Conservative part, for the upwind phase
+                faceResult_[up].addFlux
+                (
+                    Sw, massFlux, R.transpose()*momentumFlux, energyFlux
+                );
 
                 if (k != j)
                 {
@@ -896,15 +893,10 @@ void Foam::demSolver::solveFace
             const double S = w*tp.S;
 
             const double massFlux = K.rho*uFace;
-            const cobasis::vector momFlux(massFlux*K.U - s);
-            const double energyFlux = massFlux*K.E - s.dot(K.U);
-
-            faceResult_[up].dMass[0] -= S*massFlux;
-            faceResult_[up].dMass[1] += S*massFlux;
-            faceResult_[up].dMomentum[0] -= S*momFlux;
-            faceResult_[up].dMomentum[1] += S*momFlux;
-            faceResult_[up].dEnergy[0] -= S*energyFlux;
-            faceResult_[up].dEnergy[1] += S*energyFlux;
+            faceResult_[up].addFlux
+            (
+                S, massFlux, massFlux*K.U - s, massFlux*K.E - s.dot(K.U)
+            );
         }
         const double S = tp.S;
 

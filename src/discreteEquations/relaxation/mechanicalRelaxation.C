@@ -22,18 +22,23 @@ Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
 Foam::scalar Foam::mechanicalRelaxation::relaxedVolume
 (
     const label k,
-    const scalar pStar
+    const scalar pStar,
+    scalar& dvdp
 ) const
 {
     const equationOfState& eos = phases_.phase(k).eos();
     if (isentropic_[k])
     {
+        // Along the isentrope, held at the cavitation pressure below it
         const Pair<scalar> s0(isentropeStart(k));
-        return eos.vIsentropic
-        (
-            max(pStar, phases_.cavitationPressure(k)), s0.first(), s0.second()
-        );
+        const scalar pc = phases_.cavitationPressure(k);
+        dvdp =
+            pStar > pc
+          ? eos.dvIsentropicdp(pStar, s0.first(), s0.second())
+          : 0;
+        return eos.vIsentropic(max(pStar, pc), s0.first(), s0.second());
     }
+    dvdp = eos.dvRelaxeddp(pStar, 1/v0_[k], eh0_[k]);
     return eos.vRelaxed(pStar, 1/v0_[k], eh0_[k]);
 }
 
@@ -83,24 +88,9 @@ bool Foam::mechanicalRelaxation::interfacePressure
         for (label k = 0; k < nPhases_; ++k)
         {
             if (trace_[k]) continue;
-            const equationOfState& eos = phases_.phase(k).eos();
-            if (isentropic_[k])
-            {
-                const Pair<scalar> s0(isentropeStart(k));
-                const scalar pc = phases_.cavitationPressure(k);
-                f += m_[k]*eos.vIsentropic(max(pp, pc), s0.first(), s0.second());
-                if (pp > pc)
-                {
-                    dF +=
-                        m_[k]
-                       *eos.dvIsentropicdp(pp, s0.first(), s0.second());
-                }
-            }
-            else
-            {
-                f += m_[k]*eos.vRelaxed(pp, 1/v0_[k], eh0_[k]);
-                dF += m_[k]*eos.dvRelaxeddp(pp, 1/v0_[k], eh0_[k]);
-            }
+            scalar dvdp;
+            f += m_[k]*relaxedVolume(k, pp, dvdp);
+            dF += m_[k]*dvdp;
         }
         return f;
     };
@@ -221,7 +211,8 @@ bool Foam::mechanicalRelaxation::relaxPressure
     for (label k = 0; k < nPhases_; ++k)
     {
         if (trace_[k]) continue;
-        alpha_[k] = m_[k]*relaxedVolume(k, pStar);
+        scalar dvdp;
+        alpha_[k] = m_[k]*relaxedVolume(k, pStar, dvdp);
         sumActive += alpha_[k];
     }
     scalar toPayer = 0;
