@@ -32,6 +32,7 @@ Foam::demSolver::demSolver
     order_(schemeDict.getOrDefault<label>("order", 2)),
     waveSpeeds_(HLLC::waveSpeeds::Davis),
     reconstructU_(schemeDict.getOrDefault<bool>("reconstructVelocity", true)),
+    alphaCompression_(schemeDict.getOrDefault<scalar>("alphaCompression", 1)),
     patchKinds_(mesh_.boundary().size(), patchKind::value),
     coupledLeft_(mesh_.boundary().size(), true),
     magSf_(mag(mesh_.faceAreas())),
@@ -49,6 +50,8 @@ Foam::demSolver::demSolver
     dMass_(nPhases_),
     dMomentum_(nPhases_),
     dEnergy_(nPhases_),
+    dMassEpsP_(nPhases_),
+    dMassWP_(nPhases_),
     L_(nPhases_),
     advection_(nPhases_),
     centre_(nPhases_),
@@ -81,6 +84,12 @@ Foam::demSolver::demSolver
             << "Unknown waveSpeeds " << speedsName
             << "; valid: (pressureBased Davis)" << exit(FatalIOError);
     }
+    if (!(alphaCompression_ >= 1 && alphaCompression_ <= 4))
+    {
+        FatalIOErrorInFunction(schemeDict)
+            << "discreteEquations alphaCompression " << alphaCompression_
+            << " is not in [1, 4]" << exit(FatalIOError);
+    }
     if (order_ != 1 && order_ != 2)
     {
         FatalIOErrorInFunction(schemeDict)
@@ -102,6 +111,8 @@ Foam::demSolver::demSolver
         dMass_[k].resize(nCells);
         dMomentum_[k].resize(nCells);
         dEnergy_[k].resize(nCells);
+        dMassEpsP_[k].resize(nCells);
+        dMassWP_[k].resize(nCells);
         L_[k].resize(nCells);
         advection_[k].resize(nCells);
     }
@@ -153,6 +164,10 @@ Foam::demSolver::demSolver
     {
         Info<< ", face velocity reconstruction "
             << (reconstructU_ ? "on" : "off");
+    }
+    else if (alphaCompression_ > 1)
+    {
+        Info<< ", volume fraction slopes steepened by " << alphaCompression_;
     }
     Info<< nl << endl;
 }
@@ -257,6 +272,8 @@ void Foam::demSolver::centreSides
         sk.U = toEigen(Uc);
         sk.A = toEigen(phases_.A(k)[celli]);
         sk.a = a_[k][celli];
+        sk.epsP = phases_.epsilonP(k)[celli];
+        sk.wP = phases_.plasticWork(k)[celli];
 
         if (order_ == 1)
         {
@@ -334,6 +351,8 @@ void Foam::demSolver::faceSides
             sk.p = phases_.p(k)[celli];
             sk.U = U;
             sk.A = toEigen(phases_.A(k)[celli]);
+            sk.epsP = phases_.epsilonP(k)[celli];
+            sk.wP = phases_.plasticWork(k)[celli];
             sk.sigma = sigma_[k][celli];
             sk.E = E_[k][celli] + dKe;
             sk.a = a_[k][celli];
@@ -388,6 +407,8 @@ void Foam::demSolver::faceSides
         const cobasis::matrix Ac(toEigen(phases_.A(k)[celli]));
 
         sk.alpha = alphaScratch_[k];
+        sk.epsP = phases_.epsilonP(k)[celli];
+        sk.wP = phases_.plasticWork(k)[celli];
         sk.rho = rhoc + sl.gRho.dot(de) + sl.dtRho;
         sk.p = pc + sl.gP.dot(de) + sl.dtP;
         sk.U = toEigen(Uc) + sl.gU.transpose()*de + sl.dtU;
@@ -477,7 +498,11 @@ void Foam::demSolver::computeSlopes(const scalar dt)
         );
         const tmp<volVectorField> tgRho(fvc::grad(phases_.rho(k)));
         const tmp<volVectorField> tgP(fvc::grad(phases_.p(k)));
-        const vectorField& gAlpha = tgAlpha().primitiveField();
+        vectorField gAlpha(tgAlpha().primitiveField());
+        if (alphaCompression_ > 1 && nPhases_ > 1)
+        {
+            compressAlphaSlopes(alpha, gAlpha);
+        }
         const vectorField& gRho = tgRho().primitiveField();
         const vectorField& gP = tgP().primitiveField();
 
@@ -572,6 +597,83 @@ void Foam::demSolver::computeSlopes(const scalar dt)
 }
 
 
+void Foam::demSolver::compressAlphaSlopes
+(
+    const volScalarField& alpha,
+    vectorField& g
+) const
+{
+    const label nCells = mesh_.nCells();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& Cf = mesh_.faceCentres();
+    const vectorField& C = mesh_.cellCentres();
+
+    // Range of the cell's and its face neighbours' values
+    scalarField aMin(alpha.primitiveField());
+    scalarField aMax(alpha.primitiveField());
+    forAll(nei, facei)
+    {
+        const label o = own[facei];
+        const label n = nei[facei];
+        aMin[o] = min(aMin[o], alpha[n]);
+        aMax[o] = max(aMax[o], alpha[n]);
+        aMin[n] = min(aMin[n], alpha[o]);
+        aMax[n] = max(aMax[n], alpha[o]);
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (patchKinds_[patchi] != patchKind::coupled) continue;
+        const scalarField nbr
+        (
+            alpha.boundaryField()[patchi].patchNeighbourField()
+        );
+        const labelUList& fc = mesh_.boundary()[patchi].faceCells();
+        forAll(fc, i)
+        {
+            aMin[fc[i]] = min(aMin[fc[i]], nbr[i]);
+            aMax[fc[i]] = max(aMax[fc[i]], nbr[i]);
+        }
+    }
+
+    // Largest factor of g that keeps every face value in range
+    scalarField factor(nCells, alphaCompression_);
+    const auto limit = [&](const label c, const vector& d)
+    {
+        const scalar delta = g[c] & d;
+        if (delta > VSMALL)
+        {
+            factor[c] = min(factor[c], (aMax[c] - alpha[c])/delta);
+        }
+        else if (delta < -VSMALL)
+        {
+            factor[c] = min(factor[c], (aMin[c] - alpha[c])/delta);
+        }
+    };
+    forAll(nei, facei)
+    {
+        limit(own[facei], Cf[facei] - C[own[facei]]);
+        limit(nei[facei], Cf[facei] - C[nei[facei]]);
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        const patchKind kind = patchKinds_[patchi];
+        if (kind == patchKind::empty || kind == patchKind::wedge) continue;
+        const fvPatch& patch = mesh_.boundary()[patchi];
+        const labelUList& fc = patch.faceCells();
+        forAll(fc, i)
+        {
+            limit(fc[i], Cf[patch.start() + i] - C[fc[i]]);
+        }
+    }
+
+    forAll(g, c)
+    {
+        g[c] *= max(factor[c], scalar(0));
+    }
+}
+
+
 void Foam::demSolver::exchangeCoupled()
 {
     if (!Pstream::parRun())
@@ -610,6 +712,8 @@ void Foam::demSolver::exchangeCoupled()
                 send[i++] = s.a;
                 for (int j = 0; j < 3; ++j) send[i++] = s.U(j);
                 for (int j = 0; j < 9; ++j) send[i++] = s.A(j/3, j%3);
+                send[i++] = s.epsP;
+                send[i++] = s.wP;
             }
         }
 
@@ -684,6 +788,8 @@ void Foam::demSolver::ghostSides
                 g.a = s[3];
                 g.U = cobasis::vector(s[4], s[5], s[6]);
                 for (int j = 0; j < 9; ++j) g.A(j/3, j%3) = s[7 + j];
+                g.epsP = s[16];
+                g.wP = s[17];
                 completeSide(k, g);
                 break;
             }
@@ -696,6 +802,8 @@ void Foam::demSolver::ghostSides
                 g.p = phases_.p(k).boundaryField()[patchi][patchFacei];
                 g.U = toEigen(phases_.U().boundaryField()[patchi][patchFacei]);
                 g.A = c.A*std::cbrt(g.rho/c.rho);
+                g.epsP = c.epsP;
+                g.wP = c.wP;
                 completeSide(k, g);
                 g.a = std::sqrt(ph.a2Max(g.rho, g.p, g.A));
                 break;
@@ -721,6 +829,8 @@ void Foam::demSolver::solveFace
         fc.dMomentum[0].setZero();
         fc.dMomentum[1].setZero();
         fc.dEnergy[0] = fc.dEnergy[1] = 0;
+        fc.dMassEpsP[0] = fc.dMassEpsP[1] = 0;
+        fc.dMassWP[0] = fc.dMassWP[1] = 0;
         fc.vStarSum.setZero();
         fc.vStarWeight = 0;
     }
@@ -797,7 +907,8 @@ void Foam::demSolver::solveFace
                 // Conservative part, for the upwind phase
                 faceResult_[up].addFlux
                 (
-                    Sw, massFlux, R.transpose()*momentumFlux, energyFlux
+                    Sw, massFlux, R.transpose()*momentumFlux, energyFlux,
+                    fromLeft ? sl : sr
                 );
 
                 if (k != j)
@@ -895,7 +1006,7 @@ void Foam::demSolver::solveFace
             const double massFlux = K.rho*uFace;
             faceResult_[up].addFlux
             (
-                S, massFlux, massFlux*K.U - s, massFlux*K.E - s.dot(K.U)
+                S, massFlux, massFlux*K.U - s, massFlux*K.E - s.dot(K.U), K
             );
         }
         const double S = tp.S;
@@ -925,6 +1036,8 @@ void Foam::demSolver::addToCell
         dMass_[k][c] += magSf*fc.dMass[side];
         dMomentum_[k][c] += magSf*fc.dMomentum[side];
         dEnergy_[k][c] += magSf*fc.dEnergy[side];
+        dMassEpsP_[k][c] += magSf*fc.dMassEpsP[side];
+        dMassWP_[k][c] += magSf*fc.dMassWP[side];
         if (phases_.phase(k).solid())
         {
             L_[k][c] += (fc.vStarSum/fc.vStarWeight)*SfOut.transpose();
@@ -1163,6 +1276,8 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
         std::fill(dAlpha_[k].begin(), dAlpha_[k].end(), 0.0);
         std::fill(dMass_[k].begin(), dMass_[k].end(), 0.0);
         std::fill(dEnergy_[k].begin(), dEnergy_[k].end(), 0.0);
+        std::fill(dMassEpsP_[k].begin(), dMassEpsP_[k].end(), 0.0);
+        std::fill(dMassWP_[k].begin(), dMassWP_[k].end(), 0.0);
         for (label c = 0; c < nCells; ++c)
         {
             dMomentum_[k][c].setZero();
@@ -1288,6 +1403,8 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
     q.momentum.resize(nPhases_);
     q.energy.resize(nPhases_);
     q.A.resize(nPhases_);
+    q.epsilonP.resize(nPhases_);
+    q.plasticWork.resize(nPhases_);
 
     for (label k = 0; k < nPhases_; ++k)
     {
@@ -1296,11 +1413,15 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
         q.momentum[k].resize(nCells);
         q.energy[k].resize(nCells);
         q.A[k].resize(nCells);
+        q.epsilonP[k].resize(nCells);
+        q.plasticWork[k].resize(nCells);
 
         const bool solid = phases_.phase(k).solid();
         const scalarField& alpha = phases_.alpha(k).primitiveField();
         const scalarField& rho = phases_.rho(k).primitiveField();
         const tensorField& A = phases_.A(k).primitiveField();
+        const scalarField& epsP = phases_.epsilonP(k).primitiveField();
+        const scalarField& wP = phases_.plasticWork(k).primitiveField();
 
         for (label c = 0; c < nCells; ++c)
         {
@@ -1310,6 +1431,26 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
             q.mass[k][c] = m + dtByV*dMass_[k][c];
             q.momentum[k][c] = m*toEigen(U[c]) + dtByV*dMomentum_[k][c];
             q.energy[k][c] = m*E_[k][c] + dtByV*dEnergy_[k][c];
+
+            // Plastic strain and work per unit mass: the upwind values
+            // carried by the mass fluxes (a phase left without mass keeps
+            // its values; both stay non-negative)
+            if (solid && q.mass[k][c] > 0)
+            {
+                q.epsilonP[k][c] = max
+                (
+                    (m*epsP[c] + dtByV*dMassEpsP_[k][c])/q.mass[k][c], 0.0
+                );
+                q.plasticWork[k][c] = max
+                (
+                    (m*wP[c] + dtByV*dMassWP_[k][c])/q.mass[k][c], 0.0
+                );
+            }
+            else
+            {
+                q.epsilonP[k][c] = epsP[c];
+                q.plasticWork[k][c] = wP[c];
+            }
 
             const cobasis::matrix Ac(toEigen(A[c]));
             if (solid)

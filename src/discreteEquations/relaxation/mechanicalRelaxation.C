@@ -465,6 +465,11 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
         for (label k = 0; k < nPhases_; ++k)
         {
             const hyperelasticPhase& ph = phases_.phase(k);
+            if (ph.solid())
+            {
+                phases_.epsilonP(k)[c] = q.epsilonP[k][c];
+                phases_.plasticWork(k)[c] = q.plasticWork[k][c];
+            }
             if (ph.solid() && !trace_[k])
             {
                 const scalar heat = phases_.plastic(k).correct
