@@ -69,6 +69,45 @@ def set_velocity(case, speed):
         f.write(text)
 
 
+def finished_run(case, h_mm, end=None):
+    """Wall time (s, from log.impactFoam's ExecutionTime; 0 when absent) of
+    a run of case at cell size h_mm that reached its end time (80 us
+    unless given), else None: --reuse takes it instead of running again."""
+    try:
+        with open(os.path.join(case, "system", "meshSize")) as f:
+            h = [ln.split()[1].rstrip(";") for ln in f
+                 if ln.split()[:1] == ["h"]]
+        tab = read_table(case)
+    except (OSError, IndexError, KeyError, ValueError):
+        return None
+    if not h or abs(float(h[0]) - h_mm) > 1e-9 \
+            or tab["t"][-1] < (end or 80e-6) * (1 - 1e-6):
+        return None
+    wall = 0.0
+    try:
+        with open(os.path.join(case, "log.impactFoam")) as f:
+            for line in f:
+                if line.startswith("ExecutionTime"):
+                    wall = float(line.split()[6])
+    except (OSError, IndexError, ValueError):
+        pass
+    return wall
+
+
+def prepare_run(tutorial, case, h_mm, np_, reuse, label, end=None):
+    """Run tutorial at cell size h_mm in case (a fresh copy) and return the
+    wall time; with reuse, a finished run already there is taken as is."""
+    if reuse:
+        wall = finished_run(case, h_mm, end)
+        if wall is not None:
+            progress("%s h = %g mm: reusing the finished run in %s"
+                     % (label, h_mm, case))
+            return wall
+    copy_case(tutorial, case)
+    progress("%s h = %g mm: running in %s" % (label, h_mm, case))
+    return run_case(case, h_mm, np_, end=end, label=label)
+
+
 def run_case(case, h_mm, np_=1, end=None, label=""):
     """./Allrun -h h [-np N] [-end t] in case, with a progress line from the
     solver log every 20 s. Returns the wall time in s."""
