@@ -55,8 +55,6 @@ Foam::demSolver::demSolver
     L_(nPhases_),
     dMassA_(nPhases_),
     dMassOwnA_(nPhases_),
-    inflowA_(nPhases_),
-    inflow_(nPhases_),
     centre_(nPhases_),
     cellFace_(nPhases_),
     ghost_(nPhases_),
@@ -119,8 +117,6 @@ Foam::demSolver::demSolver
         L_[k].resize(nCells);
         dMassA_[k].resize(nCells);
         dMassOwnA_[k].resize(nCells);
-        inflowA_[k].resize(nCells);
-        inflow_[k].resize(nCells);
     }
 
     const vectorField& Sf = mesh_.faceAreas();
@@ -833,9 +829,6 @@ void Foam::demSolver::solveFace
         fc.dMassA[0].setZero();
         fc.dMassA[1].setZero();
         fc.dMassOwnA[0] = fc.dMassOwnA[1] = 0;
-        fc.inflowA[0].setZero();
-        fc.inflowA[1].setZero();
-        fc.inflow[0] = fc.inflow[1] = 0;
         fc.vStarSum.setZero();
         fc.vStarWeight = 0;
     }
@@ -1045,8 +1038,6 @@ void Foam::demSolver::addToCell
         dMassWP_[k][c] += magSf*fc.dMassWP[side];
         dMassA_[k][c] += magSf*fc.dMassA[side];
         dMassOwnA_[k][c] += magSf*fc.dMassOwnA[side];
-        inflowA_[k][c] += magSf*fc.inflowA[side];
-        inflow_[k][c] += magSf*fc.inflow[side];
         if (phases_.phase(k).solid())
         {
             L_[k][c] += (fc.vStarSum/fc.vStarWeight)*SfOut.transpose();
@@ -1256,13 +1247,11 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
         std::fill(dMassEpsP_[k].begin(), dMassEpsP_[k].end(), 0.0);
         std::fill(dMassWP_[k].begin(), dMassWP_[k].end(), 0.0);
         std::fill(dMassOwnA_[k].begin(), dMassOwnA_[k].end(), 0.0);
-        std::fill(inflow_[k].begin(), inflow_[k].end(), 0.0);
         for (label c = 0; c < nCells; ++c)
         {
             dMomentum_[k][c].setZero();
             L_[k][c].setZero();
             dMassA_[k][c].setZero();
-            inflowA_[k][c].setZero();
         }
     }
 
@@ -1399,7 +1388,6 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
         const tensorField& A = phases_.A(k).primitiveField();
         const scalarField& epsP = phases_.epsilonP(k).primitiveField();
         const scalarField& wP = phases_.plasticWork(k).primitiveField();
-        const scalar alphaTrace = phases_.alphaTrace();
 
         for (label c = 0; c < nCells; ++c)
         {
@@ -1443,13 +1431,7 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
                 }
                 const cobasis::matrix Alag(Ac - dt*(Ahalf*L_[k][c])/V[c]);
                 q.A[k][c] = Alag;
-                if (alpha[c] < alphaTrace && inflow_[k][c] > 0)
-                {
-                    // The phase was a trace (its cobasis a placeholder,
-                    // unstrained): it takes that of the mass entering
-                    q.A[k][c] = inflowA_[k][c]/inflow_[k][c];
-                }
-                else if (q.mass[k][c] > 0)
+                if (q.mass[k][c] > 0)
                 {
                     const cobasis::matrix Am
                     (
