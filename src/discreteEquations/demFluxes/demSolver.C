@@ -53,8 +53,7 @@ Foam::demSolver::demSolver
     dMassEpsP_(nPhases_),
     dMassWP_(nPhases_),
     L_(nPhases_),
-    dMassA_(nPhases_),
-    dMassOwnA_(nPhases_),
+    advection_(nPhases_),
     centre_(nPhases_),
     cellFace_(nPhases_),
     ghost_(nPhases_),
@@ -115,8 +114,7 @@ Foam::demSolver::demSolver
         dMassEpsP_[k].resize(nCells);
         dMassWP_[k].resize(nCells);
         L_[k].resize(nCells);
-        dMassA_[k].resize(nCells);
-        dMassOwnA_[k].resize(nCells);
+        advection_[k].resize(nCells);
     }
 
     const vectorField& Sf = mesh_.faceAreas();
@@ -447,10 +445,11 @@ void Foam::demSolver::computeSlopes(const scalar dt)
     const vectorField& U = Ufield.primitiveField();
     gradUCalc_->calculate(Ufield, gradU_);
     const tensorField& gradU = gradU_;
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
     const scalar halfDt = 0.5*dt;
 
     scalarField minAlpha(nCells);
-    scalarField maxAlpha(nCells);
 
     for (label k = 0; k < nPhases_; ++k)
     {
@@ -461,7 +460,26 @@ void Foam::demSolver::computeSlopes(const scalar dt)
         const volTensorField& A = phases_.A(k);
 
         // Minor-phase rule: below alphaMinor in the cell or any neighbour
-        alphaRange(alpha, minAlpha, maxAlpha);
+        minAlpha = alpha.primitiveField();
+        forAll(nei, facei)
+        {
+            const scalar m = min(alpha[own[facei]], alpha[nei[facei]]);
+            minAlpha[own[facei]] = min(minAlpha[own[facei]], m);
+            minAlpha[nei[facei]] = min(minAlpha[nei[facei]], m);
+        }
+        forAll(mesh_.boundary(), patchi)
+        {
+            if (patchKinds_[patchi] != patchKind::coupled) continue;
+            const scalarField nbr
+            (
+                alpha.boundaryField()[patchi].patchNeighbourField()
+            );
+            const labelUList& fc = mesh_.boundary()[patchi].faceCells();
+            forAll(fc, i)
+            {
+                minAlpha[fc[i]] = min(minAlpha[fc[i]], nbr[i]);
+            }
+        }
 
         // A single phase has alpha = 1 everywhere: no slope to compute
         const tmp<volVectorField> tgAlpha
@@ -483,7 +501,7 @@ void Foam::demSolver::computeSlopes(const scalar dt)
         vectorField gAlpha(tgAlpha().primitiveField());
         if (alphaCompression_ > 1 && nPhases_ > 1)
         {
-            compressAlphaSlopes(alpha, minAlpha, maxAlpha, gAlpha);
+            compressAlphaSlopes(alpha, gAlpha);
         }
         const vectorField& gRho = tgRho().primitiveField();
         const vectorField& gP = tgP().primitiveField();
@@ -579,18 +597,21 @@ void Foam::demSolver::computeSlopes(const scalar dt)
 }
 
 
-void Foam::demSolver::alphaRange
+void Foam::demSolver::compressAlphaSlopes
 (
     const volScalarField& alpha,
-    scalarField& aMin,
-    scalarField& aMax
+    vectorField& g
 ) const
 {
+    const label nCells = mesh_.nCells();
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
+    const vectorField& Cf = mesh_.faceCentres();
+    const vectorField& C = mesh_.cellCentres();
 
-    aMin = alpha.primitiveField();
-    aMax = alpha.primitiveField();
+    // Range of the cell's and its face neighbours' values
+    scalarField aMin(alpha.primitiveField());
+    scalarField aMax(alpha.primitiveField());
     forAll(nei, facei)
     {
         const label o = own[facei];
@@ -614,22 +635,6 @@ void Foam::demSolver::alphaRange
             aMax[fc[i]] = max(aMax[fc[i]], nbr[i]);
         }
     }
-}
-
-
-void Foam::demSolver::compressAlphaSlopes
-(
-    const volScalarField& alpha,
-    const scalarField& aMin,
-    const scalarField& aMax,
-    vectorField& g
-) const
-{
-    const label nCells = mesh_.nCells();
-    const labelUList& own = mesh_.owner();
-    const labelUList& nei = mesh_.neighbour();
-    const vectorField& Cf = mesh_.faceCentres();
-    const vectorField& C = mesh_.cellCentres();
 
     // Largest factor of g that keeps every face value in range
     scalarField factor(nCells, alphaCompression_);
@@ -826,9 +831,6 @@ void Foam::demSolver::solveFace
         fc.dEnergy[0] = fc.dEnergy[1] = 0;
         fc.dMassEpsP[0] = fc.dMassEpsP[1] = 0;
         fc.dMassWP[0] = fc.dMassWP[1] = 0;
-        fc.dMassA[0].setZero();
-        fc.dMassA[1].setZero();
-        fc.dMassOwnA[0] = fc.dMassOwnA[1] = 0;
         fc.vStarSum.setZero();
         fc.vStarWeight = 0;
     }
@@ -1036,12 +1038,42 @@ void Foam::demSolver::addToCell
         dEnergy_[k][c] += magSf*fc.dEnergy[side];
         dMassEpsP_[k][c] += magSf*fc.dMassEpsP[side];
         dMassWP_[k][c] += magSf*fc.dMassWP[side];
-        dMassA_[k][c] += magSf*fc.dMassA[side];
-        dMassOwnA_[k][c] += magSf*fc.dMassOwnA[side];
         if (phases_.phase(k).solid())
         {
             L_[k][c] += (fc.vStarSum/fc.vStarWeight)*SfOut.transpose();
         }
+    }
+}
+
+
+void Foam::demSolver::addAdvection
+(
+    const label c,
+    const cobasis::vector& SfOut,
+    const std::vector<phaseSide>& own,
+    const std::vector<phaseSide>& across
+)
+{
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if (!phases_.phase(k).solid()) continue;
+
+        const faceContribution& fc = faceResult_[k];
+        const double flux = (fc.vStarSum/fc.vStarWeight).dot(SfOut);
+
+        // Upwind face value; a trace upwind leaves the cell's own value
+        const phaseSide& up = (flux < 0) ? across[k] : own[k];
+        if (up.trace)
+        {
+            continue;
+        }
+
+        cobasis::matrix Ac(toEigen(phases_.A(k)[c]));
+        if (order_ == 2)
+        {
+            Ac += slopes_[k][c].dtA;
+        }
+        advection_[k][c] += flux*(up.A - Ac);
     }
 }
 
@@ -1246,12 +1278,11 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
         std::fill(dEnergy_[k].begin(), dEnergy_[k].end(), 0.0);
         std::fill(dMassEpsP_[k].begin(), dMassEpsP_[k].end(), 0.0);
         std::fill(dMassWP_[k].begin(), dMassWP_[k].end(), 0.0);
-        std::fill(dMassOwnA_[k].begin(), dMassOwnA_[k].end(), 0.0);
         for (label c = 0; c < nCells; ++c)
         {
             dMomentum_[k][c].setZero();
             L_[k][c].setZero();
-            dMassA_[k][c].setZero();
+            advection_[k][c].setZero();
         }
     }
 
@@ -1271,6 +1302,8 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
         const cobasis::vector S(toEigen(Sf[facei]));
         addToCell(o, 0, magSf_[facei], S);
         addToCell(nb, 1, magSf_[facei], -S);
+        addAdvection(o, S, faceO, faceN);
+        addAdvection(nb, -S, faceN, faceO);
 
         if (order_ == 2)
         {
@@ -1359,6 +1392,7 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
             }
 
             addToCell(celli, cellIsLeft ? 0 : 1, magSf_[facei], S);
+            addAdvection(celli, S, cellFace_, ghost_);
         }
     }
 
@@ -1421,32 +1455,14 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
             const cobasis::matrix Ac(toEigen(A[c]));
             if (solid)
             {
-                // Stretching with the time-centred cobasis, transport of
-                // m A by the mass fluxes (upwind face values):
-                // d(m A)/dt + div(m A u) = -m A grad(u)
+                // Time-centred cobasis in the stretching term
                 cobasis::matrix Ahalf(Ac);
                 if (order_ == 2)
                 {
                     Ahalf += slopes_[k][c].dtA;
                 }
-                const cobasis::matrix Alag(Ac - dt*(Ahalf*L_[k][c])/V[c]);
-                q.A[k][c] = Alag;
-                if (q.mass[k][c] > 0)
-                {
-                    const cobasis::matrix Am
-                    (
-                        (
-                            m*Alag
-                          + dtByV*(dMassA_[k][c] + dMassOwnA_[k][c]*Ac)
-                        )/q.mass[k][c]
-                    );
-                    // A nearly emptied cell whose remainder would not be
-                    // a deformation keeps the stretched cobasis
-                    if (Am.determinant() > 0)
-                    {
-                        q.A[k][c] = Am;
-                    }
-                }
+                q.A[k][c] =
+                    Ac - dtByV*advection_[k][c] - dt*(Ahalf*L_[k][c])/V[c];
             }
             else
             {
