@@ -445,11 +445,10 @@ void Foam::demSolver::computeSlopes(const scalar dt)
     const vectorField& U = Ufield.primitiveField();
     gradUCalc_->calculate(Ufield, gradU_);
     const tensorField& gradU = gradU_;
-    const labelUList& own = mesh_.owner();
-    const labelUList& nei = mesh_.neighbour();
     const scalar halfDt = 0.5*dt;
 
     scalarField minAlpha(nCells);
+    scalarField maxAlpha(nCells);
 
     for (label k = 0; k < nPhases_; ++k)
     {
@@ -460,26 +459,7 @@ void Foam::demSolver::computeSlopes(const scalar dt)
         const volTensorField& A = phases_.A(k);
 
         // Minor-phase rule: below alphaMinor in the cell or any neighbour
-        minAlpha = alpha.primitiveField();
-        forAll(nei, facei)
-        {
-            const scalar m = min(alpha[own[facei]], alpha[nei[facei]]);
-            minAlpha[own[facei]] = min(minAlpha[own[facei]], m);
-            minAlpha[nei[facei]] = min(minAlpha[nei[facei]], m);
-        }
-        forAll(mesh_.boundary(), patchi)
-        {
-            if (patchKinds_[patchi] != patchKind::coupled) continue;
-            const scalarField nbr
-            (
-                alpha.boundaryField()[patchi].patchNeighbourField()
-            );
-            const labelUList& fc = mesh_.boundary()[patchi].faceCells();
-            forAll(fc, i)
-            {
-                minAlpha[fc[i]] = min(minAlpha[fc[i]], nbr[i]);
-            }
-        }
+        alphaRange(alpha, minAlpha, maxAlpha);
 
         // A single phase has alpha = 1 everywhere: no slope to compute
         const tmp<volVectorField> tgAlpha
@@ -501,7 +481,7 @@ void Foam::demSolver::computeSlopes(const scalar dt)
         vectorField gAlpha(tgAlpha().primitiveField());
         if (alphaCompression_ > 1 && nPhases_ > 1)
         {
-            compressAlphaSlopes(alpha, gAlpha);
+            compressAlphaSlopes(alpha, minAlpha, maxAlpha, gAlpha);
         }
         const vectorField& gRho = tgRho().primitiveField();
         const vectorField& gP = tgP().primitiveField();
@@ -597,21 +577,18 @@ void Foam::demSolver::computeSlopes(const scalar dt)
 }
 
 
-void Foam::demSolver::compressAlphaSlopes
+void Foam::demSolver::alphaRange
 (
     const volScalarField& alpha,
-    vectorField& g
+    scalarField& aMin,
+    scalarField& aMax
 ) const
 {
-    const label nCells = mesh_.nCells();
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
-    const vectorField& Cf = mesh_.faceCentres();
-    const vectorField& C = mesh_.cellCentres();
 
-    // Range of the cell's and its face neighbours' values
-    scalarField aMin(alpha.primitiveField());
-    scalarField aMax(alpha.primitiveField());
+    aMin = alpha.primitiveField();
+    aMax = alpha.primitiveField();
     forAll(nei, facei)
     {
         const label o = own[facei];
@@ -635,6 +612,22 @@ void Foam::demSolver::compressAlphaSlopes
             aMax[fc[i]] = max(aMax[fc[i]], nbr[i]);
         }
     }
+}
+
+
+void Foam::demSolver::compressAlphaSlopes
+(
+    const volScalarField& alpha,
+    const scalarField& aMin,
+    const scalarField& aMax,
+    vectorField& g
+) const
+{
+    const label nCells = mesh_.nCells();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& Cf = mesh_.faceCentres();
+    const vectorField& C = mesh_.cellCentres();
 
     // Largest factor of g that keeps every face value in range
     scalarField factor(nCells, alphaCompression_);
