@@ -4,6 +4,8 @@
 #include "contactFractions.H"
 #include "alphaClosure.H"
 #include "fvc.H"
+#include "gaussGrad.H"
+#include "linear.H"
 #include "emptyFvPatch.H"
 #include "wedgeFvPatch.H"
 #include "wedgePolyPatch.H"
@@ -126,48 +128,71 @@ Foam::demSolver::demSolver
 
     classifyPatches();
 
-    const word limiter
-    (
-        schemeDict.getOrDefault<word>("velocityLimiter", "cellLimited")
-    );
-    if (limiter != "cellLimited" && limiter != "none")
+    const auto readLimiter = [&schemeDict](const word& key)
     {
-        FatalIOErrorInFunction(schemeDict)
-            << "Unknown velocityLimiter " << limiter
-            << "; valid: (cellLimited none)" << exit(FatalIOError);
-    }
-    List<linearVelocityGradient::neighbour> kinds(patchKinds_.size());
+        const word limiter(schemeDict.getOrDefault<word>(key, "cellLimited"));
+        if (limiter != "cellLimited" && limiter != "none")
+        {
+            FatalIOErrorInFunction(schemeDict)
+                << "Unknown " << key << " " << limiter
+                << "; valid: (cellLimited none)" << exit(FatalIOError);
+        }
+        return limiter == "cellLimited";
+    };
+    const bool limitU = readLimiter("velocityLimiter");
+    const bool limitA = readLimiter("cobasisLimiter");
+
+    // Neighbours for the velocity gradient (a no-slip wall: its zero value
+    // at the face) and for the cobasis limiter (a wall's ghost is the
+    // cell's mirror image, NUMERICS.md section 7)
+    List<cellLimiter::neighbour> kindsU(patchKinds_.size());
+    List<cellLimiter::neighbour> kindsA(patchKinds_.size());
     forAll(patchKinds_, patchi)
     {
+        using nb = cellLimiter::neighbour;
         switch (patchKinds_[patchi])
         {
             case patchKind::empty:
-                kinds[patchi] = linearVelocityGradient::neighbour::none; break;
+                kindsU[patchi] = kindsA[patchi] = nb::none; break;
             case patchKind::coupled:
-                kinds[patchi] = linearVelocityGradient::neighbour::coupled; break;
+                kindsU[patchi] = kindsA[patchi] = nb::coupled; break;
             case patchKind::mirror:
-                kinds[patchi] = linearVelocityGradient::neighbour::mirror; break;
+                kindsU[patchi] = kindsA[patchi] = nb::mirror; break;
+            case patchKind::noSlip:
+                kindsU[patchi] = nb::value;
+                kindsA[patchi] = nb::mirror;
+                break;
             case patchKind::wedge:
-                kinds[patchi] = linearVelocityGradient::neighbour::wedge; break;
+                kindsU[patchi] = kindsA[patchi] = nb::wedge; break;
             default:
-                kinds[patchi] = linearVelocityGradient::neighbour::value; break;
+                kindsU[patchi] = kindsA[patchi] = nb::value; break;
         }
+    }
+    if (limitA)
+    {
+        cobasisLimiter_.reset(new cellLimiter(mesh_, kindsA));
     }
     gradUCalc_.reset
     (
-        new linearVelocityGradient(mesh_, kinds, limiter == "cellLimited")
+        new linearVelocityGradient(mesh_, kindsU, limitU)
     );
 
     Info<< "Discrete equations: order " << order_ << ", Riemann solver "
-        << solverName << ", velocity limiter " << limiter;
+        << solverName << ", velocity limiter "
+        << (limitU ? "cellLimited" : "none");
     if (order_ == 1)
     {
         Info<< ", face velocity reconstruction "
             << (reconstructU_ ? "on" : "off");
     }
-    else if (alphaCompression_ > 1)
+    else
     {
-        Info<< ", volume fraction slopes steepened by " << alphaCompression_;
+        Info<< ", cobasis limiter " << (limitA ? "cellLimited" : "none");
+        if (alphaCompression_ > 1)
+        {
+            Info<< ", volume fraction slopes steepened by "
+                << alphaCompression_;
+        }
     }
     Info<< nl << endl;
 }
@@ -449,6 +474,7 @@ void Foam::demSolver::computeSlopes(const scalar dt)
 
     scalarField minAlpha(nCells);
     scalarField maxAlpha(nCells);
+    tensorField limiterA;
 
     for (label k = 0; k < nPhases_; ++k)
     {
@@ -486,10 +512,45 @@ void Foam::demSolver::computeSlopes(const scalar dt)
         const vectorField& gRho = tgRho().primitiveField();
         const vectorField& gP = tgP().primitiveField();
 
+        // Cobasis slopes: Gauss linear (the face values of A's boundary
+        // conditions), limited with mirror neighbours
         PtrList<volVectorField> gA(ph.solid() ? 9 : 0);
         forAll(gA, cmpt)
         {
-            gA.set(cmpt, fvc::grad(A.component(cmpt)()).ptr());
+            gA.set
+            (
+                cmpt,
+                fv::gaussGrad<scalar>::gradf
+                (
+                    linearInterpolate(A.component(cmpt)()),
+                    "gradA"
+                ).ptr()
+            );
+        }
+        if (ph.solid() && cobasisLimiter_.valid())
+        {
+            cobasisLimiter_->factors
+            (
+                A,
+                [&gA](const label celli, const vector& dx)
+                {
+                    tensor dA;
+                    for (direction cmpt = 0; cmpt < 9; ++cmpt)
+                    {
+                        dA[cmpt] = dx & gA[cmpt][celli];
+                    }
+                    return dA;
+                },
+                limiterA
+            );
+            forAll(gA, cmpt)
+            {
+                vectorField& g = gA[cmpt].primitiveFieldRef();
+                forAll(g, celli)
+                {
+                    g[celli] *= limiterA[celli][cmpt];
+                }
+            }
         }
 
         for (label c = 0; c < nCells; ++c)
@@ -978,29 +1039,27 @@ void Foam::demSolver::solveFace
 
     for (const minorPair& tp : minorPairs_)
     {
-        // Upwind side; at a face at rest half from each side
+        // Each side's traction (and its work) with half the weight, the
+        // mass and what it carries from the upwind side: the flux is then
+        // continuous in uFace (an upwind traction would jump as uFace
+        // changes sign, e.g. at the plane of a symmetric impact)
         for (int side = 0; side < 2; ++side)
         {
             const bool fromLeft = (side == 0);
-            double w = 1;
-            if (uFace == 0)
-            {
-                w = 0.5;
-            }
-            else if (fromLeft != (uFace > 0))
-            {
-                continue;
-            }
             const int up = fromLeft ? tp.k : tp.j;
             const phaseSide& K = fromLeft ? sideL[tp.k] : sideR[tp.j];
             const cobasis::vector s(K.sigma*n);
-            const double S = w*tp.S;
 
-            const double massFlux = K.rho*uFace;
-            faceResult_[up].addFlux
-            (
-                S, massFlux, massFlux*K.U - s, massFlux*K.E - s.dot(K.U), K
-            );
+            faceResult_[up].addFlux(0.5*tp.S, 0, -s, -s.dot(K.U), K);
+
+            if (uFace != 0 && fromLeft == (uFace > 0))
+            {
+                const double massFlux = K.rho*uFace;
+                faceResult_[up].addFlux
+                (
+                    tp.S, massFlux, massFlux*K.U, massFlux*K.E, K
+                );
+            }
         }
         const double S = tp.S;
 
