@@ -15,8 +15,6 @@ Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
     alpha_(nPhases_),
     trace_(nPhases_),
     isentropic_(nPhases_, false),
-    pCav_(nPhases_, -GREAT),
-    closing_(nPhases_, false),
     nVacuum_(0)
 {}
 
@@ -33,7 +31,7 @@ Foam::scalar Foam::mechanicalRelaxation::relaxedVolume
     {
         // Along the isentrope, held at the cavitation pressure below it
         const Pair<scalar> s0(isentropeStart(k));
-        const scalar pc = pCav_[k];
+        const scalar pc = phases_.cavitationPressure(k);
         dvdp =
             pStar > pc
           ? eos.dvIsentropicdp(pStar, s0.first(), s0.second())
@@ -72,7 +70,7 @@ bool Foam::mechanicalRelaxation::interfacePressure
         if (trace_[k]) continue;
         const equationOfState& eos = phases_.phase(k).eos();
         const scalar pk = eos.p(1/v0_[k], eh0_[k]);
-        if (!(isentropic_[k] && pCav_[k] > eos.pMin()))
+        if (!(isentropic_[k] && phases_.cavitationPressure(k) > eos.pMin()))
         {
             // v_k(p) grows without bound as p -> pMin
             lo = max(lo, eos.pMin());
@@ -228,7 +226,7 @@ bool Foam::mechanicalRelaxation::relaxPressure
         {
             eh0_[k] = phases_.phase(k).eos().e
             (
-                1/v, max(pStar, pCav_[k])
+                1/v, max(pStar, phases_.cavitationPressure(k))
             );
             toPayer += m_[k]*(eConstantP - eh0_[k]);
         }
@@ -327,41 +325,23 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
         }
 
         // A fluid on a reference isentrope holding less than
-        // massFractionMinor of the cell's mass (air that numerical
-        // diffusion left inside a metal) may be compressed by the other
-        // phases but not opened up: relaxed on its isentrope, it keeps its
-        // volume below its own pressure (closing_, pCav_ set below). Were
-        // it relaxed freely it would cavitate under the metal's tensile
-        // release waves, a gas holding no tension, and the near-vacuum
-        // bubble would keep growing; were it a trace of fixed volume, the
-        // bubble would never close, and the metal around it would be
-        // compressed in its place. Without a heavier phase on the default
-        // path to take its energy it is a trace. A heavy minor phase
-        // (metal debris in air) stays active: resetting it as a trace
-        // would hand its energy to the light phase
+        // massFractionMinor of the cell's mass is a trace too, whatever its
+        // volume: air inside a metal (numerical diffusion leaves such
+        // tails) would otherwise take part in the pressure relaxation and
+        // cavitate under the metal's tensile release waves, a gas holding
+        // no tension, and the near-vacuum bubble would keep growing. As a
+        // trace it stays on its isentrope (cold), see 4. below. A heavy
+        // minor phase (metal debris in air) stays active: resetting it as a
+        // trace would hand its energy to the light phase
         for (label k = 0; k < nPhases_; ++k)
         {
-            pCav_[k] = phases_.cavitationPressure(k);
-            closing_[k] = false;
             if
             (
-                !trace_[k]
-             && phases_.referenceIsentrope(k).first() > 0
+                phases_.referenceIsentrope(k).first() > 0
              && m_[k] < phases_.massFractionMinor()*mass
             )
             {
-                bool payer = false;
-                for (label j = 0; j < nPhases_; ++j)
-                {
-                    payer =
-                        payer
-                     || (
-                            j != k && !trace_[j]
-                         && !phases_.isentropicRelaxation(j)
-                        );
-                }
-                closing_[k] = payer && phases_.isentropicRelaxation(k);
-                if (!closing_[k]) trace_[k] = true;
+                trace_[k] = true;
             }
         }
 
@@ -426,20 +406,6 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
         if (err.failed && err.cell == c)
         {
             continue;
-        }
-        for (label k = 0; k < nPhases_; ++k)
-        {
-            if (closing_[k] && !trace_[k])
-            {
-                // Its pressure on its isentrope at its density: below it,
-                // it keeps its volume
-                const equationOfState& eos = phases_.phase(k).eos();
-                const Pair<scalar>& ref = phases_.referenceIsentrope(k);
-                const scalar rho = 1/v0_[k];
-                const scalar e =
-                    eos.eIsentropic(rho, ref.first(), ref.second());
-                pCav_[k] = max(pCav_[k], eos.p(rho, e));
-            }
         }
 
         // 3. Pressure relaxation among the phases that are not traces
