@@ -139,6 +139,18 @@ Foam::demSolver::demSolver
         }
         return limiter == "cellLimited";
     };
+    const word cobasisSlopes
+    (
+        schemeDict.getOrDefault<word>("cobasisSlopes", "everywhere")
+    );
+    if (cobasisSlopes != "everywhere" && cobasisSlopes != "interior")
+    {
+        FatalIOErrorInFunction(schemeDict)
+            << "Unknown cobasisSlopes " << cobasisSlopes
+            << "; valid: (everywhere interior)" << exit(FatalIOError);
+    }
+    cobasisInterior_ = (cobasisSlopes == "interior");
+
     const bool limitU = readLimiter("velocityLimiter");
     const bool limitA = readLimiter("cobasisLimiter");
 
@@ -187,7 +199,9 @@ Foam::demSolver::demSolver
     }
     else
     {
-        Info<< ", cobasis limiter " << (limitA ? "cellLimited" : "none");
+        Info<< ", cobasis limiter " << (limitA ? "cellLimited" : "none")
+            << ", cobasis slopes "
+            << (cobasisInterior_ ? "interior" : "everywhere");
         if (alphaCompression_ > 1)
         {
             Info<< ", volume fraction slopes steepened by "
@@ -595,6 +609,11 @@ void Foam::demSolver::computeSlopes(const scalar dt)
                 {
                     sl.gA[i].setZero();
                 }
+            }
+            if (cobasisInterior_ && minAlpha[c] < 1 - phases_.alphaMinor())
+            {
+                // The diffuse layer of a free surface: first order
+                for (int i = 0; i < 3; ++i) sl.gA[i].setZero();
             }
 
             // Primitive equations, with L_ij = du_i/dx_j = gU(j, i)
