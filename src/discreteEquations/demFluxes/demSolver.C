@@ -128,31 +128,23 @@ Foam::demSolver::demSolver
 
     classifyPatches();
 
-    const auto readLimiter = [&schemeDict](const word& key)
+    // A switch between two words: true for the first (the default)
+    const auto readSwitch =
+        [&schemeDict](const word& key, const word& on, const word& off)
     {
-        const word limiter(schemeDict.getOrDefault<word>(key, "cellLimited"));
-        if (limiter != "cellLimited" && limiter != "none")
+        const word value(schemeDict.getOrDefault<word>(key, on));
+        if (value != on && value != off)
         {
             FatalIOErrorInFunction(schemeDict)
-                << "Unknown " << key << " " << limiter
-                << "; valid: (cellLimited none)" << exit(FatalIOError);
+                << "Unknown " << key << " " << value
+                << "; valid: (" << on << ' ' << off << ")"
+                << exit(FatalIOError);
         }
-        return limiter == "cellLimited";
+        return value == on;
     };
-    const word cobasisSlopes
-    (
-        schemeDict.getOrDefault<word>("cobasisSlopes", "everywhere")
-    );
-    if (cobasisSlopes != "everywhere" && cobasisSlopes != "interior")
-    {
-        FatalIOErrorInFunction(schemeDict)
-            << "Unknown cobasisSlopes " << cobasisSlopes
-            << "; valid: (everywhere interior)" << exit(FatalIOError);
-    }
-    cobasisInterior_ = (cobasisSlopes == "interior");
-
-    const bool limitU = readLimiter("velocityLimiter");
-    const bool limitA = readLimiter("cobasisLimiter");
+    cobasisInterior_ = !readSwitch("cobasisSlopes", "everywhere", "interior");
+    const bool limitU = readSwitch("velocityLimiter", "cellLimited", "none");
+    const bool limitA = readSwitch("cobasisLimiter", "cellLimited", "none");
 
     // Neighbours for the velocity gradient (a no-slip wall: its zero value
     // at the face) and for the cobasis limiter (a wall's ghost is the
