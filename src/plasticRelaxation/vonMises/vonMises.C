@@ -170,13 +170,32 @@ Foam::scalar Foam::plasticModels::vonMises::correct
             return t*(1 + dt*(ft > 0 ? rate : 0)) - 1;
         };
         const scalar phiY = phi(sY);
-        s = phiY >= 0 ? sY : increasingRoot(phi, sY, 1, phiY, phi(1), 1e-14);
+        const scalar phi1 = phi(1);
+        s =
+            phiY >= 0 ? sY
+          : phi1 > 0 ? increasingRoot(phi, sY, 1, phiY, phi1, 1e-14)
+          : 1;
+    }
+
+    if (!(s < 1))
+    {
+        // No plastic flow (visco-plastic with dt = 0): A untouched
+        return 0;
     }
 
     const scalar eOld = elastic.energy(g);
 
-    const cobasis::vector scale(((s - 1)/2*h).array().exp());
-    A = A*eig.eigenvectors()*scale.asDiagonal()*eig.eigenvectors().transpose();
+    // The yielded cobasis is the stretch G_new^(1/2): its rotation carries no
+    // stress (the energy depends on G = A^T A only), and an Eulerian cobasis
+    // whose rotation varies from cell to cell (the accumulated spin of the
+    // plastic flow) is strained by the numerical diffusion of its transport
+    // alone: energy taken from the hydrodynamic part and then dissipated
+    // (eigenvalues of G: det(A)^(2/3) exp(s h) on the return path)
+    const cobasis::vector stretch
+    (
+        std::cbrt(rhoByRho0)*(s/2*h).array().exp()
+    );
+    A = eig.eigenvectors()*stretch.asDiagonal()*eig.eigenvectors().transpose();
 
     epsP += sqrt(2.0/3.0)*0.5*(1 - s)*h.norm();
 
