@@ -21,12 +21,13 @@ Checks
                          below its initial isentrope by more than 0.2 % of
                          the stiffened-gas entropy function
                          (p + pInf)/rho^gamma (about 2 kJ/kg, 6 K): the
-                         flow is adiabatic, entropy can only grow. With
-                         second-order cobasis values in the diffuse
-                         surface layer (cobasisSlopes everywhere) the
-                         surface copper falls 1.5 % below by 20 us, and on
-                         finer meshes collapses (the tutorials use
-                         cobasisSlopes interior)
+                         flow is adiabatic, entropy can only grow. When
+                         the plastic step kept the rotation of the
+                         yielded cobasis, the surface copper fell 1.5 %
+                         below by 20 us and collapsed on finer meshes:
+                         the numerical diffusion of rotations strained
+                         the cobasis with energy taken from the
+                         hydrodynamic part
   rodOnRod_half          the right half (x > 0) of the rod-on-rod run
                          equals the Taylor bar run cell by cell at every
                          write:

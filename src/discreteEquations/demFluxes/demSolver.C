@@ -142,7 +142,6 @@ Foam::demSolver::demSolver
         }
         return value == on;
     };
-    cobasisInterior_ = !readSwitch("cobasisSlopes", "everywhere", "interior");
     const bool limitU = readSwitch("velocityLimiter", "cellLimited", "none");
     const bool limitA = readSwitch("cobasisLimiter", "cellLimited", "none");
 
@@ -191,9 +190,7 @@ Foam::demSolver::demSolver
     }
     else
     {
-        Info<< ", cobasis limiter " << (limitA ? "cellLimited" : "none")
-            << ", cobasis slopes "
-            << (cobasisInterior_ ? "interior" : "everywhere");
+        Info<< ", cobasis limiter " << (limitA ? "cellLimited" : "none");
         if (alphaCompression_ > 1)
         {
             Info<< ", volume fraction slopes steepened by "
@@ -602,12 +599,6 @@ void Foam::demSolver::computeSlopes(const scalar dt)
                     sl.gA[i].setZero();
                 }
             }
-            if (cobasisInterior_ && minAlpha[c] < 1 - phases_.alphaMinor())
-            {
-                // The diffuse layer of a free surface: first order
-                for (int i = 0; i < 3; ++i) sl.gA[i].setZero();
-            }
-
             // Primitive equations, with L_ij = du_i/dx_j = gU(j, i)
             const cobasis::matrix L(sl.gU.transpose());
             const double divU = L.trace();
