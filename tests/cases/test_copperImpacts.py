@@ -51,9 +51,6 @@ from checks import Checks  # noqa: E402
 END = 20e-6
 WRITE = 2e-6
 H = 0.4  # mm
-# Copper of the tutorials: stiffened gas, initial state
-GAMMA, PINF = 4.22, 3.08e10
-RHO0, P0 = 8930.0, 1e5
 
 
 def run_case(tutorial):
@@ -105,7 +102,24 @@ def main():
         "%.0f us %.2f J; bound 0.01)"
         % (drift, K0, t[-1]*1e6, d["plasticWork"][-1]))
 
-    # Copper entropy function relative to the initial state, at every write
+    # Copper entropy function relative to the initial state, at every write;
+    # the stiffened gas of the case's phaseProperties, the state of its 0.orig
+    def entry(dict_file, key):
+        return foamcase.foam_dictionary(tb, dict_file, key)
+
+    def uniform(field):
+        value = entry(os.path.join("0.orig", field), "internalField").split()
+        if len(value) != 2 or value[0] != "uniform":
+            checks.fail("taylorBar_isentrope", "0.orig/%s is not uniform: %s"
+                        % (field, " ".join(value)))
+            checks.exit()
+        return float(value[1])
+
+    GAMMA = float(entry("constant/phaseProperties",
+                        "copper/equationOfState/gamma"))
+    PINF = float(entry("constant/phaseProperties",
+                       "copper/equationOfState/pInf"))
+    RHO0, P0 = uniform("rho.copper"), uniform("p")
     s0 = (P0 + PINF)/RHO0**GAMMA
     worstS, worstAt = 1.0, ""
     for tw, n in foamcase.time_dirs(tb):
