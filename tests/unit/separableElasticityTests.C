@@ -288,6 +288,58 @@ TEST(separableElasticity, restAndRigidRotationsAreStressFree)
 }
 
 
+TEST(separableElasticity, stretchKeepsFingerTensorAndStress)
+{
+    // cobasis::stretch(A) = (A^T A)^(1/2), what the solver stores after each
+    // step (cobasisRotation discard): symmetric positive definite, the same
+    // G = A^T A, A = R U with R = cobasis::rotation(A) orthogonal, and so the
+    // same stress and energy
+    std::mt19937 gen(11);
+    std::uniform_real_distribution<double> U(-1, 1);
+    auto model = separableWith(0.5);
+    scalar worstG = 0, worstRU = 0, worstS = 0;
+    for (int sample = 0; sample < 500; ++sample)
+    {
+        const scalar m = 0.5*(1 + U(gen));
+        const vector l
+        (
+            std::exp(m*U(gen)), std::exp(m*U(gen)), std::exp(m*U(gen))
+        );
+        const matrix A
+        (
+            randomRotation(gen)*l.asDiagonal()*randomRotation(gen).transpose()
+        );
+        const matrix Us(cobasis::stretch(A));
+        EXPECT_LE(maxAbs(Us - Us.transpose()), 1e-14*maxAbs(Us));
+        EXPECT_GT(Eigen::SelfAdjointEigenSolver<matrix>(Us).eigenvalues()(0), 0);
+        worstG = max
+        (
+            worstG,
+            maxAbs(Us.transpose()*Us - A.transpose()*A)/maxAbs(A.transpose()*A)
+        );
+        const matrix R(cobasis::rotation(A));
+        EXPECT_LE(maxAbs(R.transpose()*R - matrix::Identity()), 1e-13);
+        worstRU = max(worstRU, maxAbs(R*Us - A)/maxAbs(A));
+        worstS = max
+        (
+            worstS,
+            maxAbs(model->SofA(Us) - model->SofA(A))
+           /(muCu*(1 + maxAbs(A.transpose()*A)))
+        );
+        // A pure stretch is its own stretch
+        EXPECT_LE(maxAbs(cobasis::stretch(Us) - Us), 1e-13*maxAbs(Us));
+    }
+    EXPECT_LT(worstG, 1e-13);
+    EXPECT_LT(worstRU, 1e-13);
+    EXPECT_LT(worstS, 1e-12);
+    std::printf
+    (
+        "[ measured ] stretch: worst |U^T U - A^T A| %.2e, |R U - A| %.2e,"
+        " |S(U) - S(A)|/mu %.2e (relative)\n", worstG, worstRU, worstS
+    );
+}
+
+
 TEST(separableElasticity, frameIndifference)
 {
     // Relabelling the reference (A -> R A) changes nothing; rotating the

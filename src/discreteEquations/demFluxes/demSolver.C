@@ -142,6 +142,7 @@ Foam::demSolver::demSolver
         }
         return value == on;
     };
+    keepCobasisRotation_ = !readSwitch("cobasisRotation", "discard", "keep");
     const bool limitU = readSwitch("velocityLimiter", "cellLimited", "none");
     const bool limitA = readSwitch("cobasisLimiter", "cellLimited", "none");
 
@@ -182,7 +183,8 @@ Foam::demSolver::demSolver
 
     Info<< "Discrete equations: order " << order_ << ", Riemann solver "
         << solverName << ", velocity limiter "
-        << (limitU ? "cellLimited" : "none");
+        << (limitU ? "cellLimited" : "none") << ", cobasis rotation "
+        << (keepCobasisRotation_ ? "keep" : "discard");
     if (order_ == 1)
     {
         Info<< ", face velocity reconstruction "
@@ -1517,6 +1519,13 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
                 }
                 q.A[k][c] =
                     Ac - dtByV*advection_[k][c] - dt*(Ahalf*L_[k][c])/V[c];
+
+                // Stored without rotation (an inverted cobasis is left for
+                // the relaxation's det(A) check)
+                if (!keepCobasisRotation_ && q.A[k][c].determinant() > 0)
+                {
+                    q.A[k][c] = cobasis::stretch(q.A[k][c]);
+                }
             }
             else
             {
