@@ -10,8 +10,12 @@ Description
     Hank, Gavrilyuk, Favrie & Massoni (Int. J. Impact Eng. 2017) discretised
     by the discrete equations method.
 
-    Each step: hyperbolic DEM step (face Riemann problems between the phases
-    in contact), then velocity, pressure and plastic relaxation.
+    Each step (docs/numerics.md): the derived cell states and the stable
+    time step; the hyperbolic step of the discrete equations method (face
+    Riemann problems between the phases in contact); the body forces; the
+    relaxation (velocity, pressure, traces, plasticity) with its state
+    checks; a step that fails them is retried with a shorter step
+    (stepControl).
 
     Dictionaries: constant/phaseProperties (phases and their models),
     system/fvSchemes discreteEquations { riemannSolver HLLC; } and
@@ -25,9 +29,8 @@ Description
 #include "phaseSystem.H"
 #include "demSolver.H"
 #include "mechanicalRelaxation.H"
-#include "uniformDimensionedFields.H"
-#include "bodyAcceleration.H"
-#include "landingDeltaT.H"
+#include "bodyForces.H"
+#include "stepControl.H"
 
 int main(int argc, char *argv[])
 {
@@ -59,75 +62,44 @@ int main(int argc, char *argv[])
         runTime.setEndTime(endTimeOption);
     }
     #include "createMesh.H"
-    #include "createFields.H"
+
+    phaseSystem phases(mesh);
+    demSolver dem(phases, mesh.schemesDict().subOrEmptyDict("discreteEquations"));
+    mechanicalRelaxation relaxation(phases);
+    bodyForces forces(mesh);
+    stepControl step(runTime, phases, dem);
+    conservedState q;
 
     Info<< "\nStarting time loop\n" << endl;
 
     while (runTime.run())
     {
         dem.prepare();
+        const scalar dt = step.advance();
 
-        const scalar dtStable = dem.stableDeltaT();
-        scalar dt = min(dtFactor*maxCo*dtStable, maxDeltaT);
-
-        // Land exactly on the next write time (adjustable write control)
-        // and on endTime, with steps no longer than the stable one
-        dt = landingDeltaT(runTime, dt);
-        runTime.setDeltaT(dt, false);
-        dt = runTime.deltaTValue();
-
-        const scalar oldTime = runTime.value();
-        const label oldIndex = runTime.timeIndex();
-
-        #include "saveState.H"
-
-        ++runTime;
-
-        Info<< "Time = " << runTime.timeName()
-            << "  deltaT = " << dt
-            << "  Courant Number max = " << dt/dtStable << endl;
-        if (debugDeltaT && dem.limitingCell() >= 0)
+        if (forces.active())
         {
-            Pout<< "    deltaT limited by cell " << dem.limitingCell()
-                << " at " << mesh.C()[dem.limitingCell()]
-                << ", wave speed " << dem.limitingSpeed() << endl;
+            dem.setAcceleration(forces.update(runTime.value() - 0.5*dt));
+        }
+        dem.hyperbolicStep(dt, q);
+        forces.addSources(dt, q);
+
+        if (!step.accept(relaxation.correct(q, dt)))
+        {
+            continue;
         }
 
-        #include "bodyAccelerationField.H"
-
-        dem.hyperbolicStep(dt, q);
-
-        #include "bodyForces.H"
-
-        const mechanicalRelaxation::stateError err = relaxation.correct(q, dt);
-
-        #include "checkState.H"
-
-        const label nVacuum = returnReduce(relaxation.nVacuum(), sumOp<label>());
+        const label nVacuum =
+            returnReduce(relaxation.nVacuum(), sumOp<label>());
         if (nVacuum)
         {
-            Info<< "    vacuum floor (pVacuum) in " << nVacuum << " cells" << nl;
+            Info<< "    vacuum floor (pVacuum) in " << nVacuum << " cells"
+                << nl;
         }
-
-        // A good step: let a reduced time step grow back
-        dtFactor = min(2*dtFactor, scalar(1));
 
         phases.correctBoundaryConditions();
         phases.correctMixture();
-
-        runTime.write();
-        if
-        (
-            pendingWrite > 0
-         && runTime.value() >= pendingWrite - 1e-6*runTime.deltaTValue()
-        )
-        {
-            if (!runTime.writeTime())
-            {
-                runTime.writeNow();
-            }
-            pendingWrite = -1;
-        }
+        step.write();
     }
 
     // The final state, also when endTime is not a write time

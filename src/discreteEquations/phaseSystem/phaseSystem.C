@@ -7,49 +7,12 @@
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::wordList Foam::phaseSystem::derivedPatchTypes() const
-{
-    wordList types
-    (
-        mesh_.boundary().size(),
-        zeroGradientFvPatchScalarField::typeName
-    );
-    forAll(mesh_.boundary(), patchi)
-    {
-        const word& pType = mesh_.boundaryMesh()[patchi].type();
-        if (polyPatch::constraintType(pType))
-        {
-            types[patchi] = pType;
-        }
-    }
-    return types;
-}
-
-
-Foam::wordList Foam::phaseSystem::mirrorPatchTypes() const
-{
-    // As derivedPatchTypes, and slip where U is slip: the cobasis of the
-    // mirrored state is M A M (M = I - 2 n n), and its component gradients
-    // must see that (zeroGradient gave the off-diagonal rows of A at a slip
-    // wall the wrong sign)
-    wordList types(derivedPatchTypes());
-    forAll(mesh_.boundary(), patchi)
-    {
-        if (U_.boundaryField()[patchi].type() == "slip")
-        {
-            types[patchi] = "slip";
-        }
-    }
-    return types;
-}
-
-
-void Foam::phaseSystem::checkFieldNames() const
+void Foam::phaseSystem::checkFieldNames(const wordList& prefixes) const
 {
     const fileName dir(mesh_.time().timePath());
     const fileNameList files(readDir(dir, fileName::FILE));
 
-    for (const word prefix : {"alpha.", "rho.", "A.", "p.", "epsilonP."})
+    for (const word& prefix : prefixes)
     {
         for (const fileName& f : files)
         {
@@ -77,7 +40,7 @@ void Foam::phaseSystem::checkAlpha()
     const label nCells = mesh_.nCells();
     forAll(phases_, k)
     {
-        const scalarField& a = alpha_[k].primitiveField();
+        const scalarField& a = phases_[k].alpha().primitiveField();
         forAll(a, celli)
         {
             if (!(a[celli] >= 0 && a[celli] <= 1))
@@ -95,7 +58,7 @@ void Foam::phaseSystem::checkAlpha()
         scalar sum = 0;
         forAll(phases_, k)
         {
-            sum += alpha_[k][celli];
+            sum += phases_[k].alpha()[celli];
         }
         if (mag(sum - 1) > 1e-6)
         {
@@ -111,40 +74,8 @@ void Foam::phaseSystem::checkAlpha()
         (
             phases_.size(),
             alphaMin_,
-            [&](const label k) -> scalar& { return alpha_[k][celli]; }
+            [&](const label k) -> scalar& { return alpha(k)[celli]; }
         );
-    }
-}
-
-
-void Foam::phaseSystem::initCobasis(const label k, const bool readA)
-{
-    const hyperelasticPhase& ph = phases_[k];
-    tensorField& A = A_[k].primitiveFieldRef();
-    const scalarField& rho = rho_[k].primitiveField();
-
-    if (!ph.solid())
-    {
-        A = tensor::I;
-        return;
-    }
-
-    const scalar rho0 = ph.rho0();
-    forAll(A, celli)
-    {
-        if (!readA)
-        {
-            A[celli] = cbrt(rho[celli]/rho0)*tensor::I;
-            continue;
-        }
-        const scalar detA = det(A[celli]);
-        if (!(detA > 0))
-        {
-            FatalErrorInFunction
-                << "A." << ph.name() << " has det = " << detA
-                << " <= 0 in cell " << celli << exit(FatalError);
-        }
-        A[celli] *= cbrt(rho[celli]/(rho0*detA));
     }
 }
 
@@ -186,6 +117,7 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
         ),
         mesh
     ),
+    boundary_(U_),
     pMixture_
     (
         IOobject
@@ -210,7 +142,7 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
         ),
         mesh,
         dimensionedScalar(dimDensity, Zero),
-        derivedPatchTypes()
+        boundaryKinds::derivedPatchTypes(mesh)
     ),
     sigma_
     (
@@ -224,7 +156,7 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
         ),
         mesh,
         dimensionedSymmTensor(dimPressure, Zero),
-        derivedPatchTypes()
+        boundaryKinds::derivedPatchTypes(mesh)
     ),
     sigmaEq_
     (
@@ -238,7 +170,7 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
         ),
         mesh,
         dimensionedScalar(dimPressure, Zero),
-        derivedPatchTypes()
+        boundaryKinds::derivedPatchTypes(mesh)
     )
 {
     if (phaseNames_.empty())
@@ -261,23 +193,12 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
             << ") < 0.5" << exit(FatalIOError);
     }
 
-    checkFieldNames();
+    checkFieldNames({"alpha.", "rho.", "A.", "p."});
 
-    const label N = phaseNames_.size();
-    phases_.setSize(N);
-    plastic_.setSize(N);
-    isentropicRelaxation_.setSize(N, false);
-    isentrope_.setSize(N);
-    pCavitation_.setSize(N);
-    alpha_.setSize(N);
-    rho_.setSize(N);
-    p_.setSize(N);
-    A_.setSize(N);
-    epsilonP_.setSize(N);
-    plasticWork_.setSize(N);
+    const wordList derivedTypes(boundaryKinds::derivedPatchTypes(mesh));
+    const wordList mirrorTypes(boundary_.cobasisPatchTypes(mesh));
 
-    const word timeName(mesh.time().timeName());
-
+    phases_.setSize(phaseNames_.size());
     forAll(phaseNames_, k)
     {
         const word& name = phaseNames_[k];
@@ -288,256 +209,56 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
                 << " sub-dictionary in " << dict_.objectPath()
                 << exit(FatalIOError);
         }
-        const dictionary& phaseDict = dict_.subDict(name);
-
-        phases_.set(k, new hyperelasticPhase(name, phaseDict));
-
-        const word path
-        (
-            phaseDict.getOrDefault<word>
-            (
-                "pressureRelaxation", "constantPressure"
-            )
-        );
-        if (path != "constantPressure" && path != "isentropic")
-        {
-            FatalIOErrorInFunction(phaseDict)
-                << "Phase " << name << ": unknown pressureRelaxation "
-                << path << "; valid: (constantPressure isentropic)"
-                << exit(FatalIOError);
-        }
-        if (path == "isentropic" && phases_[k].solid())
-        {
-            FatalIOErrorInFunction(phaseDict)
-                << "Phase " << name << ": pressureRelaxation isentropic is"
-                << " for fluids only" << exit(FatalIOError);
-        }
-        isentropicRelaxation_[k] = (path == "isentropic");
-        isentrope_[k] = Pair<scalar>(-1, 0);
-        pCavitation_[k] = -GREAT;
-        if (phaseDict.found("cavitationPressure"))
-        {
-            pCavitation_[k] = phaseDict.get<scalar>("cavitationPressure");
-            if
-            (
-                !isentropicRelaxation_[k]
-             || !(pCavitation_[k] > phases_[k].eos().pMin())
-            )
-            {
-                FatalIOErrorInFunction(phaseDict)
-                    << "Phase " << name << ": cavitationPressure "
-                    << pCavitation_[k] << " needs pressureRelaxation"
-                    << " isentropic and a value above "
-                    << phases_[k].eos().pMin() << exit(FatalIOError);
-            }
-        }
-        if (phaseDict.found("referenceIsentrope"))
-        {
-            const Pair<scalar> ref
-            (
-                phaseDict.get<Pair<scalar>>("referenceIsentrope")
-            );
-            if
-            (
-                !isentropicRelaxation_[k] || !(ref.first() > 0)
-             || !(ref.second() > phases_[k].eos().pMin())
-            )
-            {
-                FatalIOErrorInFunction(phaseDict)
-                    << "Phase " << name << ": referenceIsentrope " << ref
-                    << " needs pressureRelaxation isentropic, rho > 0 and"
-                    << " p > " << phases_[k].eos().pMin()
-                    << exit(FatalIOError);
-            }
-            isentrope_[k] = Pair<scalar>
-            (
-                ref.first(),
-                phases_[k].eos().e(ref.first(), ref.second())
-            );
-        }
-
-        if (phases_[k].solid())
-        {
-            plastic_.set
-            (
-                k,
-                plasticModel::New(name, phaseDict.subDict("plasticity"))
-            );
-        }
-        else
-        {
-            dictionary noneDict;
-            noneDict.add("type", "none");
-            plastic_.set(k, plasticModel::New(name, noneDict));
-        }
-
-        alpha_.set
+        phases_.set
         (
             k,
-            new volScalarField
+            new phaseModel
             (
-                IOobject
-                (
-                    "alpha." + name,
-                    timeName,
-                    mesh,
-                    IOobject::MUST_READ,
-                    IOobject::AUTO_WRITE
-                ),
-                mesh
+                k, name, dict_.subDict(name), pMixture_,
+                derivedTypes, mirrorTypes
             )
         );
-
-        rho_.set
-        (
-            k,
-            new volScalarField
-            (
-                IOobject
-                (
-                    "rho." + name,
-                    timeName,
-                    mesh,
-                    IOobject::MUST_READ,
-                    IOobject::AUTO_WRITE
-                ),
-                mesh
-            )
-        );
-
-        IOobject pIO
-        (
-            "p." + name,
-            timeName,
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::AUTO_WRITE
-        );
-        if (pIO.typeHeaderOk<volScalarField>(true))
-        {
-            p_.set(k, new volScalarField(pIO, mesh));
-        }
-        else
-        {
-            pIO.readOpt() = IOobject::NO_READ;
-            p_.set(k, new volScalarField(pIO, pMixture_));
-        }
-
-        IOobject AIO
-        (
-            "A." + name,
-            timeName,
-            mesh,
-            IOobject::MUST_READ,
-            phases_[k].solid() ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
-        );
-        const bool readA =
-            phases_[k].solid() && AIO.typeHeaderOk<volTensorField>(true);
-        if (readA)
-        {
-            A_.set(k, new volTensorField(AIO, mesh));
-        }
-        else
-        {
-            AIO.readOpt() = IOobject::NO_READ;
-            A_.set
-            (
-                k,
-                new volTensorField
-                (
-                    AIO,
-                    mesh,
-                    dimensionedTensor("I", dimless, tensor::I),
-                    mirrorPatchTypes()
-                )
-            );
-        }
-
-        IOobject epsIO
-        (
-            "epsilonP." + name,
-            timeName,
-            mesh,
-            IOobject::READ_IF_PRESENT,
-            phases_[k].solid() ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
-        );
-        epsilonP_.set
-        (
-            k,
-            new volScalarField
-            (
-                epsIO,
-                mesh,
-                dimensionedScalar(dimless, Zero),
-                derivedPatchTypes()
-            )
-        );
-        if (epsIO.typeHeaderOk<volScalarField>(true))
-        {
-            epsilonP_[k].primitiveFieldRef() =
-                volScalarField(epsIO, mesh).primitiveField();
-        }
-
-        IOobject wIO
-        (
-            "plasticWork." + name,
-            timeName,
-            mesh,
-            IOobject::READ_IF_PRESENT,
-            phases_[k].solid() ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
-        );
-        plasticWork_.set
-        (
-            k,
-            new volScalarField
-            (
-                wIO,
-                mesh,
-                dimensionedScalar(dimEnergy/dimMass, Zero),
-                derivedPatchTypes()
-            )
-        );
-        if (wIO.typeHeaderOk<volScalarField>(true))
-        {
-            plasticWork_[k].primitiveFieldRef() =
-                volScalarField(wIO, mesh).primitiveField();
-        }
-
-        // Admissible initial state
-        const equationOfState& eos = phases_[k].eos();
-        const scalarField& rho = rho_[k].primitiveField();
-        const scalarField& pk = p_[k].primitiveField();
-        forAll(rho, celli)
-        {
-            if (!(rho[celli] > 0) || !(pk[celli] > eos.pMin()))
-            {
-                FatalErrorInFunction
-                    << "Phase " << name << " starts in cell " << celli
-                    << " with rho = " << rho[celli] << ", p = " << pk[celli]
-                    << ": need rho > 0 and p > " << eos.pMin()
-                    << exit(FatalError);
-            }
-        }
-
-        initCobasis(k, readA);
     }
+
+    // Field files of the carried variables that name no phase
+    wordList carriedPrefixes;
+    for (const phaseModel& phase : phases_)
+    {
+        for (const carriedVariable& var : phase.carriedInfo())
+        {
+            if (!carriedPrefixes.found(var.name + "."))
+            {
+                carriedPrefixes.append(var.name + ".");
+            }
+        }
+    }
+    checkFieldNames(carriedPrefixes);
 
     checkAlpha();
     correctBoundaryConditions();
     correctMixture();
 
     Info<< "Phases:" << nl;
-    forAll(phases_, k)
+    for (const phaseModel& phase : phases_)
     {
-        Info<< "    " << phaseNames_[k] << ": "
-            << (phases_[k].solid() ? "solid" : "fluid")
-            << ", equationOfState " << phases_[k].eos().type();
-        if (phases_[k].solid())
+        const hyperelasticPhase& law = phase.law();
+        Info<< "    " << phase.name() << ": "
+            << (law.solid() ? "solid" : "fluid")
+            << ", equationOfState " << law.eos().type();
+        if (law.solid())
         {
-            Info<< ", elasticity " << phases_[k].elastic().type()
-                << " (rho0 " << phases_[k].rho0()
-                << ", mu " << phases_[k].mu() << ")"
-                << ", plasticity " << plastic_[k].type();
+            Info<< ", elasticity " << law.elastic().type()
+                << " (rho0 " << law.rho0()
+                << ", mu " << law.mu() << ")"
+                << ", plasticity " << phase.plastic().type();
+        }
+        if (phase.nCarried())
+        {
+            Info<< ", carried";
+            for (const carriedVariable& var : phase.carriedInfo())
+            {
+                Info<< ' ' << var.name;
+            }
         }
         Info<< nl;
     }
@@ -549,12 +270,9 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
 
 void Foam::phaseSystem::correctBoundaryConditions()
 {
-    forAll(phases_, k)
+    for (phaseModel& phase : phases_)
     {
-        alpha_[k].correctBoundaryConditions();
-        rho_[k].correctBoundaryConditions();
-        p_[k].correctBoundaryConditions();
-        A_[k].correctBoundaryConditions();
+        phase.correctBoundaryConditions();
     }
     U_.correctBoundaryConditions();
 }
@@ -572,11 +290,11 @@ void Foam::phaseSystem::correctMixture()
 
     forAll(phases_, k)
     {
-        const hyperelasticPhase& ph = phases_[k];
-        const scalarField& a = alpha_[k].primitiveField();
-        const scalarField& rho = rho_[k].primitiveField();
-        const scalarField& p = p_[k].primitiveField();
-        const tensorField& A = A_[k].primitiveField();
+        const hyperelasticPhase& ph = phases_[k].law();
+        const scalarField& a = phases_[k].alpha().primitiveField();
+        const scalarField& rho = phases_[k].rho().primitiveField();
+        const scalarField& p = phases_[k].p().primitiveField();
+        const tensorField& A = phases_[k].A().primitiveField();
 
         forAll(a, celli)
         {
@@ -602,4 +320,26 @@ void Foam::phaseSystem::correctMixture()
     pMixture_.correctBoundaryConditions();
     sigma_.correctBoundaryConditions();
     sigmaEq_.correctBoundaryConditions();
+}
+
+
+void Foam::phaseSystem::saveState()
+{
+    for (phaseModel& phase : phases_)
+    {
+        phase.saveState();
+    }
+    USave_ = U_.primitiveField();
+}
+
+
+void Foam::phaseSystem::restoreState()
+{
+    for (phaseModel& phase : phases_)
+    {
+        phase.restoreState();
+    }
+    U_.primitiveFieldRef() = USave_;
+    correctBoundaryConditions();
+    correctMixture();
 }

@@ -15,7 +15,10 @@ Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
     alpha_(nPhases_),
     trace_(nPhases_),
     isentropic_(nPhases_, false),
-    nVacuum_(0)
+    nVacuum_(0),
+    err_(),
+    nActive_(0),
+    traceVolume_(0)
 {}
 
 
@@ -162,7 +165,7 @@ bool Foam::mechanicalRelaxation::vacuumFloor(const label k)
 bool Foam::mechanicalRelaxation::relaxPressure
 (
     const label c,
-    demSolver::conservedState& q,
+    conservedState& q,
     const scalar traceVolume,
     scalar& pStar
 )
@@ -248,242 +251,385 @@ bool Foam::mechanicalRelaxation::relaxPressure
 }
 
 
-Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
+void Foam::mechanicalRelaxation::fail
 (
-    demSolver::conservedState& q,
-    const scalar dt
+    const label c,
+    const label k,
+    const char* what,
+    const scalar value
 )
 {
-    stateError err;
-    nVacuum_ = 0;
-    const auto fail = [&err](label c, label k, const char* what, scalar v)
+    if (!err_.failed)
     {
-        if (!err.failed)
-        {
-            err.failed = true;
-            err.cell = c;
-            err.phase = k;
-            err.quantity = what;
-            err.value = v;
-        }
-    };
+        err_.failed = true;
+        err_.cell = c;
+        err_.phase = k;
+        err_.quantity = what;
+        err_.value = value;
+    }
+}
 
-    const label nCells = phases_.mesh().nCells();
-    const scalar alphaMin = phases_.alphaMin();
+
+Foam::label Foam::mechanicalRelaxation::floorVolumeFractions
+(
+    const label c,
+    conservedState& q
+)
+{
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if (!(q.alpha[k][c] > -1e-3))
+        {
+            fail(c, k, "alpha", q.alpha[k][c]);
+        }
+    }
+    return floorAndClose
+    (
+        nPhases_,
+        phases_.alphaMin(),
+        [&](const label k) -> scalar& { return q.alpha[k][c]; }
+    );
+}
+
+
+Foam::scalar Foam::mechanicalRelaxation::collectMasses
+(
+    const label c,
+    conservedState& q,
+    cobasis::vector& mom
+)
+{
     const scalar alphaTrace = phases_.alphaTrace();
-    vectorField& Ufield = phases_.U().primitiveFieldRef();
-
-    for (label c = 0; c < nCells; ++c)
+    mom.setZero();
+    scalar mass = 0;
+    for (label k = 0; k < nPhases_; ++k)
     {
-        // 1. Floor of alpha, sum closed by the largest phase; compatibility
-        //    of A
-        for (label k = 0; k < nPhases_; ++k)
+        alpha_[k] = q.alpha[k][c];
+        trace_[k] = alpha_[k] < alphaTrace;
+
+        if (!(q.mass[k][c] > 0))
         {
-            if (!(q.alpha[k][c] > -1e-3))
+            // Minor after the step, or before it (by its mass fraction)
+            scalar oldMix = 0;
+            for (label j = 0; j < nPhases_; ++j)
             {
-                fail(c, k, "alpha", q.alpha[k][c]);
+                oldMix += phases_.alpha(j)[c]*phases_.rho(j)[c];
             }
+            const bool minor =
+                alpha_[k] < phases_.alphaMinor()
+             || phases_.alpha(k)[c]*phases_.rho(k)[c]
+              < phases_.massFractionMinor()*oldMix;
+            if (!minor)
+            {
+                fail(c, k, "mass", q.mass[k][c]);
+            }
+            // A minor phase that lost all its mass keeps its last
+            // density (the mass this adds is below alphaMinor rho, or
+            // massFractionMinor of the cell's mass)
+            q.mass[k][c] = alpha_[k]*phases_.rho(k)[c];
         }
-        const label main = floorAndClose
+        m_[k] = q.mass[k][c];
+        mass += m_[k];
+        mom += q.momentum[k][c];
+    }
+
+    // A fluid on a reference isentrope holding less than
+    // massFractionMinor of the cell's mass is a trace too, whatever its
+    // volume: air inside a metal (numerical diffusion leaves such tails)
+    // would otherwise take part in the pressure relaxation and cavitate
+    // under the metal's tensile release waves, a gas holding no tension,
+    // and the near-vacuum bubble would keep growing. As a trace it stays
+    // on its isentrope (cold), see relaxTraces. A heavy minor phase (metal
+    // debris in air) stays active: resetting it as a trace would hand its
+    // energy to the light phase
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if
         (
-            nPhases_,
-            alphaMin,
-            [&](const label k) -> scalar& { return q.alpha[k][c]; }
-        );
-
-        cobasis::vector mom(cobasis::vector::Zero());
-        scalar mass = 0;
-        for (label k = 0; k < nPhases_; ++k)
+            phases_.referenceIsentrope(k).first() > 0
+         && m_[k] < phases_.massFractionMinor()*mass
+        )
         {
-            alpha_[k] = q.alpha[k][c];
-            trace_[k] = alpha_[k] < alphaTrace;
-
-            if (!(q.mass[k][c] > 0))
-            {
-                // Minor after the step, or before it (by its mass fraction)
-                scalar oldMix = 0;
-                for (label j = 0; j < nPhases_; ++j)
-                {
-                    oldMix += phases_.alpha(j)[c]*phases_.rho(j)[c];
-                }
-                const bool minor =
-                    alpha_[k] < phases_.alphaMinor()
-                 || phases_.alpha(k)[c]*phases_.rho(k)[c]
-                  < phases_.massFractionMinor()*oldMix;
-                if (!minor)
-                {
-                    fail(c, k, "mass", q.mass[k][c]);
-                }
-                // A minor phase that lost all its mass keeps its last
-                // density (the mass this adds is below alphaMinor rho, or
-                // massFractionMinor of the cell's mass)
-                q.mass[k][c] = alpha_[k]*phases_.rho(k)[c];
-            }
-            m_[k] = q.mass[k][c];
-            mass += m_[k];
-            mom += q.momentum[k][c];
+            trace_[k] = true;
         }
+    }
+    return mass;
+}
 
-        // A fluid on a reference isentrope holding less than
-        // massFractionMinor of the cell's mass is a trace too, whatever its
-        // volume: air inside a metal (numerical diffusion leaves such
-        // tails) would otherwise take part in the pressure relaxation and
-        // cavitate under the metal's tensile release waves, a gas holding
-        // no tension, and the near-vacuum bubble would keep growing. As a
-        // trace it stays on its isentrope (cold), see 4. below. A heavy
-        // minor phase (metal debris in air) stays active: resetting it as a
-        // trace would hand its energy to the light phase
-        for (label k = 0; k < nPhases_; ++k)
+
+void Foam::mechanicalRelaxation::relaxVelocity
+(
+    const label c,
+    conservedState& q,
+    const cobasis::vector& u
+)
+{
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        const hyperelasticPhase& ph = phases_.phase(k);
+        v0_[k] = alpha_[k]/m_[k];
+        cobasis::matrix& A = q.A[k][c];
+        if (ph.solid())
+        {
+            const scalar detA = A.determinant();
+            if (!(detA > 0))
+            {
+                if (!trace_[k]) fail(c, k, "det(A)", detA);
+                A = cobasis::unstrained(1/v0_[k], ph.rho0());
+            }
+            else
+            {
+                A *= std::cbrt(1/(v0_[k]*ph.rho0()*detA));
+            }
+        }
+        // Own kinetic energy out, the share of the dissipated kinetic
+        // energy 1/2 |u_k - u|^2 in: e_k never decreases
+        const cobasis::vector uk(q.momentum[k][c]/m_[k]);
+        eh0_[k] =
+            q.energy[k][c]/m_[k] - 0.5*uk.squaredNorm()
+          + 0.5*(uk - u).squaredNorm() - ph.elasticEnergy(A);
+    }
+}
+
+
+void Foam::mechanicalRelaxation::screenEnergies
+(
+    const label c,
+    const scalar mass
+)
+{
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if (trace_[k]) continue;
+        const equationOfState& eos = phases_.phase(k).eos();
+        const scalar pk = eos.p(1/v0_[k], eh0_[k]);
+        if (!(pk > eos.pMin()))
         {
             if
             (
-                phases_.referenceIsentrope(k).first() > 0
-             && m_[k] < phases_.massFractionMinor()*mass
+                alpha_[k] < phases_.alphaMinor()
+             || m_[k] < phases_.massFractionMinor()*mass
             )
             {
                 trace_[k] = true;
             }
+            else if
+            (
+                phases_.pVacuum() >= 0 && !phases_.phase(k).solid()
+             && vacuumFloor(k)
+            )
+            {}
+            else
+            {
+                fail(c, k, "p", pk);
+            }
+        }
+    }
+}
+
+
+bool Foam::mechanicalRelaxation::relaxPressures
+(
+    const label c,
+    conservedState& q,
+    const label main,
+    scalar& pStar
+)
+{
+    nActive_ = 0;
+    traceVolume_ = 0;
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if (trace_[k]) traceVolume_ += alpha_[k];
+        else ++nActive_;
+    }
+
+    if (nActive_ > 1)
+    {
+        if (!relaxPressure(c, q, traceVolume_, pStar))
+        {
+            fail(c, main, "interface pressure (no convergence)", pStar);
+            return false;
+        }
+    }
+    else
+    {
+        pStar = phases_.phase(main).eos().p(1/v0_[main], eh0_[main]);
+    }
+    return true;
+}
+
+
+void Foam::mechanicalRelaxation::relaxTraces
+(
+    const label c,
+    conservedState& q,
+    const label main,
+    const scalar pStar
+)
+{
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if (!trace_[k]) continue;
+        const hyperelasticPhase& ph = phases_.phase(k);
+        const scalar rho = 1/v0_[k];
+        scalar pk = max(pStar, ph.eos().pMin() + 1);
+        const scalar eeOld = ph.elasticEnergy(q.A[k][c]);
+        if (ph.solid())
+        {
+            q.A[k][c] = cobasis::unstrained(rho, ph.rho0());
+        }
+        // A fluid with a reference isentrope stays on it (a trace of air
+        // inside a metal at the metal's pressure, 1e8-1e9 Pa, and its own
+        // tiny density would hold 1e12 J/kg, and the metal would pay for
+        // it every step)
+        const Pair<scalar>& ref = phases_.referenceIsentrope(k);
+        const scalar eNew =
+            ref.first() > 0
+          ? ph.eos().eIsentropic(rho, ref.first(), ref.second())
+          : ph.eos().e(rho, pk);
+        eh0_[main] -= m_[k]*(eNew - eh0_[k] - eeOld)/m_[main];
+        eh0_[k] = eNew;
+    }
+}
+
+
+bool Foam::mechanicalRelaxation::relaxPlastic
+(
+    const label c,
+    conservedState& q,
+    const scalar dt
+)
+{
+    bool heated = false;
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        phaseModel& phase = phases_[k];
+        const hyperelasticPhase& ph = phase.law();
+        for (label i = 0; i < phase.nCarried(); ++i)
+        {
+            phase.carried(i)[c] = q.carried[k][i][c];
+        }
+        if (ph.solid() && !trace_[k])
+        {
+            const scalar heat = phase.plastic().correct
+            (
+                q.A[k][c], phase.carried(phase.epsilonPIndex())[c],
+                ph.elastic(), dt
+            );
+            eh0_[k] += heat;
+            phase.carried(phase.plasticWorkIndex())[c] += heat;
+            heated = heated || heat > 0;
+        }
+    }
+    return heated;
+}
+
+
+void Foam::mechanicalRelaxation::vacuumAfterRelaxation()
+{
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        const equationOfState& eos = phases_.phase(k).eos();
+        if
+        (
+            phases_.pVacuum() >= 0 && !trace_[k]
+         && !phases_.phase(k).solid()
+         && !(eos.p(1/v0_[k], eh0_[k]) > eos.pMin())
+        )
+        {
+            vacuumFloor(k);
+        }
+    }
+}
+
+
+void Foam::mechanicalRelaxation::checkAndStore
+(
+    const label c,
+    const conservedState& q,
+    const cobasis::vector& u
+)
+{
+    phases_.U()[c] = vector(u(0), u(1), u(2));
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        const hyperelasticPhase& ph = phases_.phase(k);
+        const cobasis::matrix& A = q.A[k][c];
+
+        const scalar rho = 1/v0_[k];
+        const scalar p = ph.eos().p(rho, eh0_[k]);
+
+        if (!trace_[k])
+        {
+            if (!(rho > 0)) fail(c, k, "rho", rho);
+            if (!(p > ph.eos().pMin())) fail(c, k, "p", p);
+            if (!(alpha_[k] <= 1)) fail(c, k, "alpha", alpha_[k]);
+            if (ph.solid() && !(A.determinant() > 0))
+            {
+                fail(c, k, "det(A)", A.determinant());
+            }
         }
 
-        // 2. Velocity relaxation
+        phases_.alpha(k)[c] = alpha_[k];
+        phases_.rho(k)[c] = rho;
+        phases_.p(k)[c] = p;
+        phases_.A(k)[c] = toTensor(A);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
+(
+    conservedState& q,
+    const scalar dt
+)
+{
+    err_ = stateError();
+    nVacuum_ = 0;
+
+    const label nCells = phases_.mesh().nCells();
+    for (label c = 0; c < nCells; ++c)
+    {
+        // 1. Volume fractions floored, the sum closed by the largest phase;
+        //    the masses and the trace phases
+        const label main = floorVolumeFractions(c, q);
+        cobasis::vector mom;
+        const scalar mass = collectMasses(c, q, mom);
+
+        // 2. One velocity; the cobasis made compatible with the density
         const cobasis::vector u(mom/mass);
+        relaxVelocity(c, q, u);
 
-        for (label k = 0; k < nPhases_; ++k)
-        {
-            const hyperelasticPhase& ph = phases_.phase(k);
-            v0_[k] = alpha_[k]/m_[k];
-            cobasis::matrix& A = q.A[k][c];
-            if (ph.solid())
-            {
-                const scalar detA = A.determinant();
-                if (!(detA > 0))
-                {
-                    if (!trace_[k]) fail(c, k, "det(A)", detA);
-                    A = cobasis::unstrained(1/v0_[k], ph.rho0());
-                }
-                else
-                {
-                    A *= std::cbrt(1/(v0_[k]*ph.rho0()*detA));
-                }
-            }
-            // Own kinetic energy out, the share of the dissipated kinetic
-            // energy 1/2 |u_k - u|^2 in: e_k never decreases
-            const cobasis::vector uk(q.momentum[k][c]/m_[k]);
-            eh0_[k] =
-                q.energy[k][c]/m_[k] - 0.5*uk.squaredNorm()
-              + 0.5*(uk - u).squaredNorm() - ph.elasticEnergy(A);
-        }
-
-        // A minor phase whose energy the step left inadmissible (a gas
-        // with e <= 0, say) is reset as a trace; any other phase fails
-        for (label k = 0; k < nPhases_; ++k)
-        {
-            if (trace_[k]) continue;
-            const equationOfState& eos = phases_.phase(k).eos();
-            const scalar pk = eos.p(1/v0_[k], eh0_[k]);
-            if (!(pk > eos.pMin()))
-            {
-                if
-                (
-                    alpha_[k] < phases_.alphaMinor()
-                 || m_[k] < phases_.massFractionMinor()*mass
-                )
-                {
-                    trace_[k] = true;
-                }
-                else if
-                (
-                    phases_.pVacuum() >= 0 && !phases_.phase(k).solid()
-                 && vacuumFloor(k)
-                )
-                {}
-                else
-                {
-                    fail(c, k, "p", pk);
-                }
-            }
-        }
-        if (err.failed && err.cell == c)
+        // A minor phase whose energy the step left inadmissible is reset
+        // as a trace, a torn gas floored (pVacuum); any other phase fails
+        screenEnergies(c, mass);
+        if (err_.failed && err_.cell == c)
         {
             continue;
         }
 
         // 3. Pressure relaxation among the phases that are not traces
-        label nActive = 0;
-        scalar traceVolume = 0;
-        for (label k = 0; k < nPhases_; ++k)
-        {
-            if (trace_[k]) traceVolume += alpha_[k];
-            else ++nActive;
-        }
-
         scalar pStar;
-        if (nActive > 1)
+        if (!relaxPressures(c, q, main, pStar))
         {
-            if (!relaxPressure(c, q, traceVolume, pStar))
-            {
-                fail(c, main, "interface pressure (no convergence)", pStar);
-                continue;
-            }
-        }
-        else
-        {
-            pStar = phases_.phase(main).eos().p(1/v0_[main], eh0_[main]);
+            continue;
         }
 
         // 4. Traces follow the cell: pressure p*, unstrained cobasis
-        for (label k = 0; k < nPhases_; ++k)
-        {
-            if (!trace_[k]) continue;
-            const hyperelasticPhase& ph = phases_.phase(k);
-            const scalar rho = 1/v0_[k];
-            scalar pk = max(pStar, ph.eos().pMin() + 1);
-            const scalar eeOld = ph.elasticEnergy(q.A[k][c]);
-            if (ph.solid())
-            {
-                q.A[k][c] = cobasis::unstrained(rho, ph.rho0());
-            }
-            // A fluid with a reference isentrope stays on it (a trace of
-            // air inside a metal at the metal's pressure, 1e8-1e9 Pa, and
-            // its own tiny density would hold 1e12 J/kg, and the metal
-            // would pay for it every step)
-            const Pair<scalar>& ref = phases_.referenceIsentrope(k);
-            const scalar eNew =
-                ref.first() > 0
-              ? ph.eos().eIsentropic(rho, ref.first(), ref.second())
-              : ph.eos().e(rho, pk);
-            eh0_[main] -= m_[k]*(eNew - eh0_[k] - eeOld)/m_[main];
-            eh0_[k] = eNew;
-        }
+        relaxTraces(c, q, main, pStar);
 
         // 5. Plastic relaxation. Its heat raises the pressure of the
         //    solid; in a mixed cell the pressures are relaxed once more, or
         //    the next step would start out of equilibrium and the solid
         //    would push the heat into its neighbours (a light gas next to
         //    a yielding metal took it all and reached 1e5 K)
-        bool heated = false;
-        for (label k = 0; k < nPhases_; ++k)
+        const bool heated = relaxPlastic(c, q, dt);
+        if (heated && nActive_ > 1)
         {
-            const hyperelasticPhase& ph = phases_.phase(k);
-            if (ph.solid())
-            {
-                phases_.epsilonP(k)[c] = q.epsilonP[k][c];
-                phases_.plasticWork(k)[c] = q.plasticWork[k][c];
-            }
-            if (ph.solid() && !trace_[k])
-            {
-                const scalar heat = phases_.plastic(k).correct
-                (
-                    q.A[k][c], phases_.epsilonP(k)[c], ph.elastic(), dt
-                );
-                eh0_[k] += heat;
-                phases_.plasticWork(k)[c] += heat;
-                heated = heated || heat > 0;
-            }
-        }
-        if (heated && nActive > 1)
-        {
-            if (!relaxPressure(c, q, traceVolume, pStar))
+            if (!relaxPressure(c, q, traceVolume_, pStar))
             {
                 fail(c, main, "interface pressure (no convergence)", pStar);
                 continue;
@@ -493,47 +639,11 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
         // A fluid that the pressure relaxation took to the edge of its
         // admissible range (a gas opened up by a solid in tension: p* at
         // pMin to round-off)
-        for (label k = 0; k < nPhases_; ++k)
-        {
-            const equationOfState& eos = phases_.phase(k).eos();
-            if
-            (
-                phases_.pVacuum() >= 0 && !trace_[k]
-             && !phases_.phase(k).solid()
-             && !(eos.p(1/v0_[k], eh0_[k]) > eos.pMin())
-            )
-            {
-                vacuumFloor(k);
-            }
-        }
+        vacuumAfterRelaxation();
 
-        // 6. Checks, store
-        Ufield[c] = vector(u(0), u(1), u(2));
-        for (label k = 0; k < nPhases_; ++k)
-        {
-            const hyperelasticPhase& ph = phases_.phase(k);
-            const cobasis::matrix& A = q.A[k][c];
-
-            const scalar rho = 1/v0_[k];
-            const scalar p = ph.eos().p(rho, eh0_[k]);
-
-            if (!trace_[k])
-            {
-                if (!(rho > 0)) fail(c, k, "rho", rho);
-                if (!(p > ph.eos().pMin())) fail(c, k, "p", p);
-                if (!(alpha_[k] <= 1)) fail(c, k, "alpha", alpha_[k]);
-                if (ph.solid() && !(A.determinant() > 0))
-                {
-                    fail(c, k, "det(A)", A.determinant());
-                }
-            }
-
-            phases_.alpha(k)[c] = alpha_[k];
-            phases_.rho(k)[c] = rho;
-            phases_.p(k)[c] = p;
-            phases_.A(k)[c] = toTensor(A);
-        }
+        // 6. Checks; the phase fields
+        checkAndStore(c, q, u);
     }
 
-    return err;
+    return err_;
 }

@@ -1,4 +1,5 @@
 #include "plasticModel.H"
+#include "carriedVariable.H"
 
 namespace Foam
 {
@@ -14,3 +15,12 @@ Foam::plasticModel::plasticModel
 :
     phaseName_(phaseName)
 {}
+
+
+Foam::carriedVariableList Foam::plasticModel::carriedVariables() const
+{
+    carriedVariableList vars;
+    vars.append(carriedVariable("epsilonP", dimless, 0, 0));
+    vars.append(carriedVariable("plasticWork", dimEnergy/dimMass, 0, 0));
+    return vars;
+}

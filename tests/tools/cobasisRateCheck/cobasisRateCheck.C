@@ -12,7 +12,7 @@ Description
     Reads the case at its start time (phaseSystem, fvSchemes
     discreteEquations), calls demSolver::prepare() and one
     demSolver::hyperbolicStep() of length dt = dtFraction*stableDeltaT()
-    (the fields are not changed), and compares demSolver::velocityGradient
+    (the fields are not changed), and compares cobasisTransport::velocityGradient
     of a solid phase (the first solid phase unless -phase is given) with L0
     in every cell. The error is the Frobenius norm |L - L0|.
 
@@ -155,7 +155,7 @@ int main(int argc, char *argv[])
     const scalar dtStable = dem.stableDeltaT();
     const scalar dt = dtFraction*dtStable;
 
-    demSolver::conservedState q;
+    conservedState q;
     dem.hyperbolicStep(dt, q);
 
     // Boundary cells: a face on a patch other than empty, wedge, coupled
@@ -216,7 +216,16 @@ int main(int argc, char *argv[])
 
     forAll(mesh.C(), celli)
     {
-        const tensor L(toTensor(dem.velocityGradient(phasei, celli)));
+        const tensor L
+        (
+            toTensor
+            (
+                dem.cobasis().velocityGradient
+                (
+                    phasei, celli, mesh.V()[celli]
+                )
+            )
+        );
         const scalar err = mag(L - L0);
         Lcobasis[celli] = L;
         LcobasisError[celli] = err;

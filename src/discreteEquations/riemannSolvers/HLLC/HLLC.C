@@ -1,16 +1,22 @@
 #include "HLLC.H"
+#include "addToRunTimeSelectionTable.H"
 #include <algorithm>
 #include <cmath>
+
+namespace Foam
+{
+namespace riemannSolvers
+{
+    defineTypeNameAndDebug(HLLC, 0);
+    addToRunTimeSelectionTable(riemannSolver, HLLC, dictionary);
+}
+}
+
 
 namespace
 {
 
-// Guard of a denominator that may vanish for trace-phase pairs
-inline double guard(const double d)
-{
-    const double tiny = 1e-300;
-    return std::abs(d) > tiny ? d : (d < 0 ? -tiny : tiny);
-}
+using Foam::riemannSolver;
 
 
 //- Contact speed S* of the HLLC solution for the given bounds
@@ -29,28 +35,59 @@ inline double contactSpeed
     mR = R.rho*(R.v(0) - SR);
     // S* = [s_Ln - s_Rn + rho_L u_L (S_L - u_L) - rho_R u_R (S_R - u_R)]
     //    / [rho_L (S_L - u_L) - rho_R (S_R - u_R)]
-    return (L.s(0) - R.s(0) - mL*L.v(0) + mR*R.v(0))/guard(mR - mL);
+    return
+        (L.s(0) - R.s(0) - mL*L.v(0) + mR*R.v(0))
+       /riemannSolver::guard(mR - mL);
 }
 
 } // End anonymous namespace
 
 
-Foam::riemannSolution Foam::HLLC::solve
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::riemannSolvers::HLLC::HLLC(const dictionary& dict)
+:
+    riemannSolver(dict),
+    waveSpeeds_(waveSpeeds::Davis)
+{
+    const word speedsName(dict.getOrDefault<word>("waveSpeeds", "Davis"));
+    if (speedsName == "pressureBased")
+    {
+        waveSpeeds_ = waveSpeeds::pressureBased;
+    }
+    else if (speedsName != "Davis")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown waveSpeeds " << speedsName
+            << "; valid: (pressureBased Davis)" << exit(FatalIOError);
+    }
+}
+
+
+Foam::riemannSolvers::HLLC::HLLC(const waveSpeeds estimate)
+:
+    riemannSolver(dictionary()),
+    waveSpeeds_(estimate)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::riemannSolution Foam::riemannSolvers::HLLC::solve
 (
     const riemannState& L,
     const riemannState& R,
-    const waveSpeeds estimate
-)
+    const bool
+) const
 {
     const double uL = L.v(0);
     const double uR = R.v(0);
 
     // Davis bounds
-    const double SLDavis = std::min(uL - L.a, uR - R.a);
-    const double SRDavis = std::max(uL + L.a, uR + R.a);
+    double SL = std::min(uL - L.a, uR - R.a);
+    double SR = std::max(uL + L.a, uR + R.a);
 
-    double SL = SLDavis, SR = SRDavis;
-    if (estimate == waveSpeeds::pressureBased)
+    if (waveSpeeds_ == waveSpeeds::pressureBased)
     {
         // Acoustic contact pressure between the two impedances (pressure
         // = minus the normal traction)
@@ -65,6 +102,25 @@ Foam::riemannSolution Foam::HLLC::solve
         SL = uL - qL*L.a;
         SR = uR + qR*R.a;
     }
+
+    return starSolution(L, R, SL, SR);
+}
+
+
+Foam::riemannSolution Foam::riemannSolvers::HLLC::starSolution
+(
+    const riemannState& L,
+    const riemannState& R,
+    double SL,
+    double SR
+)
+{
+    const double uL = L.v(0);
+    const double uR = R.v(0);
+
+    // Davis bounds, the fall-back when S* is not between SL and SR
+    const double SLDavis = std::min(uL - L.a, uR - R.a);
+    const double SRDavis = std::max(uL + L.a, uR + R.a);
 
     double mL, mR;
     double Sstar = contactSpeed(L, R, SL, SR, mL, mR);

@@ -1,0 +1,163 @@
+#include "stepControl.H"
+#include "landingDeltaT.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::stepControl::stepControl
+(
+    Time& runTime,
+    phaseSystem& phases,
+    const demSolver& dem
+)
+:
+    runTime_(runTime),
+    phases_(phases),
+    dem_(dem),
+    maxCo_(runTime.controlDict().getOrDefault<scalar>("maxCo", 0.4)),
+    maxDeltaT_
+    (
+        runTime.controlDict().getOrDefault<scalar>("maxDeltaT", GREAT)
+    ),
+    dtFactor_(1),
+    minDtFactor_
+    (
+        runTime.controlDict().getOrDefault<scalar>("minDeltaTFactor", 1.0/64)
+    ),
+    debugDeltaT_
+    (
+        runTime.controlDict().getOrDefault<bool>("debugDeltaT", false)
+    ),
+    pendingWrite_(-1),
+    oldTime_(runTime.value()),
+    oldIndex_(runTime.timeIndex()),
+    dtStable_(GREAT)
+{
+    if (!(maxCo_ > 0 && maxCo_ <= 1))
+    {
+        FatalIOErrorInFunction(runTime.controlDict())
+            << "maxCo = " << maxCo_ << " must be in (0, 1]"
+            << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::stepControl::advance()
+{
+    dtStable_ = dem_.stableDeltaT();
+    scalar dt = min(dtFactor_*maxCo_*dtStable_, maxDeltaT_);
+
+    // Land exactly on the next write time (adjustable write control) and
+    // on endTime, with steps no longer than the stable one
+    dt = landingDeltaT(runTime_, dt);
+    runTime_.setDeltaT(dt, false);
+    dt = runTime_.deltaTValue();
+
+    oldTime_ = runTime_.value();
+    oldIndex_ = runTime_.timeIndex();
+
+    // Keep the state of the last good step, to write it if this one fails
+    phases_.saveState();
+
+    ++runTime_;
+
+    Info<< "Time = " << runTime_.timeName()
+        << "  deltaT = " << dt
+        << "  Courant Number max = " << dt/dtStable_ << endl;
+    if (debugDeltaT_ && dem_.limitingCell() >= 0)
+    {
+        const fvMesh& mesh = phases_.mesh();
+        Pout<< "    deltaT limited by cell " << dem_.limitingCell()
+            << " at " << mesh.C()[dem_.limitingCell()]
+            << ", wave speed " << dem_.limitingSpeed() << endl;
+    }
+
+    return dt;
+}
+
+
+bool Foam::stepControl::accept(const mechanicalRelaxation::stateError& err)
+{
+    if (!returnReduce(err.failed, orOp<bool>()))
+    {
+        // A good step: let a reduced time step grow back
+        dtFactor_ = min(2*dtFactor_, scalar(1));
+        return true;
+    }
+
+    const fvMesh& mesh = phases_.mesh();
+    if (err.failed)
+    {
+        Perr<< "impactFoam: unphysical state at time " << runTime_.value()
+            << ": phase " << phases_.names()[err.phase]
+            << ", cell " << err.cell
+            << " (centre " << mesh.C()[err.cell] << "): "
+            << err.quantity << " = " << err.value << endl;
+    }
+
+    const scalar failedTime = runTime_.value();
+
+    if (dtFactor_ > minDtFactor_)
+    {
+        // Retry the step with half the time step. A rejected step to a
+        // write time has used up OpenFOAM's write index for it: the write
+        // is made when the retries reach that time
+        if (runTime_.writeTime())
+        {
+            pendingWrite_ = runTime_.value();
+        }
+        phases_.restoreState();
+        runTime_.setTime(oldTime_, oldIndex_);
+        dtFactor_ *= 0.5;
+        Info<< "    Step rejected; retrying with " << dtFactor_
+            << " of the stable time step" << endl;
+        return false;
+    }
+
+    phases_.restoreState();
+    runTime_.setTime(oldTime_, oldIndex_);
+    runTime_.writeNow();
+
+    // Every processor has written before any of them stops the run (a
+    // fatal error on one aborts the others, mid-write)
+    returnReduce(true, andOp<bool>());
+
+    OStringStream where;
+    if (err.failed)
+    {
+        where
+            << " in phase " << phases_.names()[err.phase]
+            << ", cell " << err.cell << ": "
+            << err.quantity << " = " << err.value;
+    }
+    else
+    {
+        where << " on another processor";
+    }
+
+    FatalErrorInFunction
+        << "Unphysical state at time " << failedTime << where.str().c_str()
+        << nl << "    The last good fields were written at time "
+        << runTime_.timeName() << exit(FatalError);
+
+    return false;
+}
+
+
+void Foam::stepControl::write()
+{
+    runTime_.write();
+    if
+    (
+        pendingWrite_ > 0
+     && runTime_.value() >= pendingWrite_ - 1e-6*runTime_.deltaTValue()
+    )
+    {
+        if (!runTime_.writeTime())
+        {
+            runTime_.writeNow();
+        }
+        pendingWrite_ = -1;
+    }
+}

@@ -1,0 +1,59 @@
+#include "cellStates.H"
+#include "foamEigen.H"
+
+using Foam::foamEigen::toEigen;
+
+
+Foam::cellStates::cellStates(const phaseSystem& phases)
+:
+    phases_(phases),
+    E_(phases.size()),
+    a_(phases.size()),
+    sigma_(phases.size())
+{
+    const label nCells = phases.mesh().nCells();
+    for (label k = 0; k < phases.size(); ++k)
+    {
+        E_[k].resize(nCells);
+        a_[k].resize(nCells);
+        sigma_[k].resize(nCells);
+    }
+}
+
+
+void Foam::cellStates::update()
+{
+    const label nCells = phases_.mesh().nCells();
+    const vectorField& U = phases_.U().primitiveField();
+
+    for (label k = 0; k < phases_.size(); ++k)
+    {
+        const phaseModel& phase = phases_[k];
+        const hyperelasticPhase& ph = phase.law();
+        const scalarField& rho = phase.rho().primitiveField();
+        const scalarField& p = phase.p().primitiveField();
+        const tensorField& A = phase.A().primitiveField();
+
+        const scalarField& alpha = phase.alpha().primitiveField();
+        const scalar aMinor = phases_.alphaMinor();
+        const scalar cT2 = ph.cT2();
+
+        for (label celli = 0; celli < nCells; ++celli)
+        {
+            const cobasis::matrix Ac(toEigen(A[celli]));
+            sigma_[k][celli] = ph.sigma(p[celli], Ac);
+            E_[k][celli] =
+                ph.e(rho[celli], p[celli], Ac) + 0.5*magSqr(U[celli]);
+
+            // The acoustic eigenproblem for the phases that set the time
+            // step; a minor phase (a trace is unstrained) takes the
+            // small-strain speed c_h^2 + 4/3 mu/rho0
+            a_[k][celli] = std::sqrt
+            (
+                alpha[celli] < aMinor
+              ? ph.eos().c2(rho[celli], p[celli]) + 4.0/3.0*cT2
+              : ph.a2Max(rho[celli], p[celli], Ac)
+            );
+        }
+    }
+}

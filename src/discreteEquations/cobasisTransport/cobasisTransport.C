@@ -1,0 +1,79 @@
+#include "cobasisTransport.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::cobasisTransport::cobasisTransport
+(
+    const phaseSystem& phases,
+    const dictionary& dict
+)
+:
+    phases_(phases),
+    nPhases_(phases.size()),
+    keepRotation_(false),
+    L_(nPhases_),
+    advection_(nPhases_)
+{
+    const word rotation
+    (
+        dict.getOrDefault<word>("cobasisRotation", "discard")
+    );
+    if (rotation != "discard" && rotation != "keep")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown cobasisRotation " << rotation
+            << "; valid: (discard keep)" << exit(FatalIOError);
+    }
+    keepRotation_ = (rotation == "keep");
+
+    const label nCells = phases.mesh().nCells();
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if (phases.phase(k).solid())
+        {
+            L_[k].resize(nCells);
+            advection_[k].resize(nCells);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::cobasisTransport::reset()
+{
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        for (cobasis::matrix& L : L_[k])
+        {
+            L.setZero();
+        }
+        for (cobasis::matrix& a : advection_[k])
+        {
+            a.setZero();
+        }
+    }
+}
+
+
+Foam::cobasis::matrix Foam::cobasisTransport::update
+(
+    const label k,
+    const label c,
+    const scalar dt,
+    const scalar V,
+    const cobasis::matrix& A,
+    const cobasis::matrix& Ahalf
+) const
+{
+    const scalar dtByV = dt/V;
+    cobasis::matrix Anew(A - dtByV*advection_[k][c] - dt*(Ahalf*L_[k][c])/V);
+
+    // Stored without rotation (an inverted cobasis is left for the
+    // relaxation's det(A) check)
+    if (!keepRotation_ && Anew.determinant() > 0)
+    {
+        Anew = cobasis::stretch(Anew);
+    }
+    return Anew;
+}

@@ -1,0 +1,346 @@
+#include "demFaceAssembly.H"
+#include "faceFrame.H"
+#include "contactFractions.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::demFaceAssembly::demFaceAssembly
+(
+    const phaseSystem& phases,
+    const dictionary& dict
+)
+:
+    phases_(phases),
+    nPhases_(phases.size()),
+    riemann_(riemannSolver::New(dict)),
+    dAlpha_(nPhases_),
+    dMass_(nPhases_),
+    dMomentum_(nPhases_),
+    dEnergy_(nPhases_),
+    dMassCarried_(nPhases_),
+    faceResult_(nPhases_),
+    alphaScratch_(nPhases_),
+    stamp_(0)
+{
+    const label nCells = phases.mesh().nCells();
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        dAlpha_[k].resize(nCells);
+        dMass_[k].resize(nCells);
+        dMomentum_[k].resize(nCells);
+        dEnergy_[k].resize(nCells);
+        dMassCarried_[k].resize(phases[k].nCarried());
+        for (auto& d : dMassCarried_[k])
+        {
+            d.resize(nCells);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::demFaceAssembly::reset()
+{
+    const label nCells = phases_.mesh().nCells();
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        std::fill(dAlpha_[k].begin(), dAlpha_[k].end(), 0.0);
+        std::fill(dMass_[k].begin(), dMass_[k].end(), 0.0);
+        std::fill(dEnergy_[k].begin(), dEnergy_[k].end(), 0.0);
+        for (auto& d : dMassCarried_[k])
+        {
+            std::fill(d.begin(), d.end(), 0.0);
+        }
+        for (label c = 0; c < nCells; ++c)
+        {
+            dMomentum_[k][c].setZero();
+        }
+    }
+
+    // The time-centred cell states of the last step are stale
+    // (allocated for the cells that hold an internal contact only)
+    if (centres_.empty())
+    {
+        centres_.resize(nCells);
+        centreStamp_.resize(nCells, -1);
+    }
+    ++stamp_;
+}
+
+
+void Foam::demFaceAssembly::solveFace
+(
+    const std::vector<phaseSide>& sideL,
+    const std::vector<phaseSide>& sideR,
+    const cobasis::matrix& R
+)
+{
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        faceContribution& fc = faceResult_[k];
+        fc.dAlpha[0] = fc.dAlpha[1] = 0;
+        fc.dMass[0] = fc.dMass[1] = 0;
+        fc.dMomentum[0].setZero();
+        fc.dMomentum[1].setZero();
+        fc.dEnergy[0] = fc.dEnergy[1] = 0;
+        for (label i = 0; i < phases_[k].nCarried(); ++i)
+        {
+            fc.dMassCarried[0][i] = fc.dMassCarried[1][i] = 0;
+        }
+        fc.vStarSum.setZero();
+        fc.vStarWeight = 0;
+    }
+
+    const auto alphaL = [&sideL](const int k) { return sideL[k].alpha; };
+    const auto alphaR = [&sideR](const int k) { return sideR[k].alpha; };
+
+    const cobasis::vector n(R.row(0).transpose());
+
+    // Pairs between two minor states (alpha < alphaMinor) are carried with
+    // the face's contact velocity after the other pairs are solved: their
+    // own waves (a trace of hot gas has a sound speed of tens of km/s) are
+    // not resolved by the time step, and solving them would empty the
+    // minor phase faster than it holds mass
+    minorPairs_.clear();
+    double uFace = 0, wFace = 0;
+
+    contactFractions::forAllPairs
+    (
+        nPhases_, alphaL, alphaR,
+        [&](const int k, const int j, const double S)
+        {
+            const phaseSide& sl = sideL[k];
+            const phaseSide& sr = sideR[j];
+
+            if (sl.minor && sr.minor)
+            {
+                minorPairs_.push_back({k, j, S});
+                return;
+            }
+
+            riemannState L, Rs;
+            L.rho = sl.rho;
+            L.v = R*sl.U;
+            L.s = R*(sl.sigma*n);
+            L.E = sl.E;
+            L.a = sl.a;
+            L.cT = sl.cT;
+            L.G = phases_.phase(k).eos().fundamentalDerivative(sl.rho, sl.p);
+            L.solid = sl.solid;
+
+            Rs.rho = sr.rho;
+            Rs.v = R*sr.U;
+            Rs.s = R*(sr.sigma*n);
+            Rs.E = sr.E;
+            Rs.a = sr.a;
+            Rs.cT = sr.cT;
+            Rs.G = phases_.phase(j).eos().fundamentalDerivative(sr.rho, sr.p);
+            Rs.solid = sr.solid;
+
+            const riemannSolution sol = riemann_->solve(L, Rs, k == j);
+
+            uFace += S*sol.uStar;
+            wFace += S;
+
+            const cobasis::vector vStarL(R.transpose()*sol.vStarL);
+            const cobasis::vector vStarR(R.transpose()*sol.vStarR);
+            const cobasis::vector tStar(R.transpose()*sol.tStar);
+
+            // Conservative and Lagrangian parts of the upwind side, with
+            // weight w; the flux is in the face frame
+            const auto apply = [&]
+            (
+                const bool fromLeft,
+                const double w,
+                const double massFlux,
+                const cobasis::vector& momentumFlux,
+                const double energyFlux
+            )
+            {
+                const int up = fromLeft ? k : j;
+                const double Sw = w*S;
+
+                // Conservative part, for the upwind phase
+                faceResult_[up].addFlux
+                (
+                    Sw, massFlux, R.transpose()*momentumFlux, energyFlux,
+                    fromLeft ? sl : sr
+                );
+
+                if (k != j)
+                {
+                    // Lagrangian part in the receiving cell c
+                    const int c = fromLeft ? 1 : 0;
+                    const int invaded = fromLeft ? j : k;
+                    const cobasis::vector tc
+                    (
+                        fromLeft ? (-tStar).eval() : tStar
+                    );
+                    const cobasis::vector& vStar = fromLeft ? vStarL : vStarR;
+                    const double work = tc.dot(vStar);
+                    const double du = std::abs(sol.uStar);
+
+                    faceResult_[up].dAlpha[c] += Sw*du;
+                    faceResult_[invaded].dAlpha[c] -= Sw*du;
+                    faceResult_[up].dMomentum[c] -= Sw*tc;
+                    faceResult_[invaded].dMomentum[c] += Sw*tc;
+                    faceResult_[up].dEnergy[c] -= Sw*work;
+                    faceResult_[invaded].dEnergy[c] += Sw*work;
+                }
+            };
+
+            if (sol.uStar != 0 || k == j)
+            {
+                apply
+                (
+                    sol.uStar >= 0, 1,
+                    sol.massFlux, sol.momentumFlux, sol.energyFlux
+                );
+            }
+            else
+            {
+                // A contact at rest (the plane of a symmetric impact):
+                // half of each side's star flux (no mass, the traction,
+                // its work at that side's star velocity), so that the
+                // face has no preferred side
+                apply
+                (
+                    true, 0.5,
+                    0, sol.momentumFlux, -sol.tStar.dot(sol.vStarL)
+                );
+                apply
+                (
+                    false, 0.5,
+                    0, sol.momentumFlux, -sol.tStar.dot(sol.vStarR)
+                );
+            }
+
+            // Star velocity seen by each phase, for the cobasis
+            faceResult_[k].vStarSum += S*vStarL;
+            faceResult_[k].vStarWeight += S;
+            faceResult_[j].vStarSum += S*vStarR;
+            faceResult_[j].vStarWeight += S;
+        }
+    );
+
+    if (minorPairs_.empty())
+    {
+        return;
+    }
+
+    // Minor pairs: upwind transport at the contact velocity of the face
+    // (the mean normal velocity of the sides where no pair was solved)
+    if (wFace > 0)
+    {
+        uFace /= wFace;
+    }
+    else
+    {
+        uFace = 0.5*(sideL[0].U + sideR[0].U).dot(n);
+    }
+
+    for (const minorPair& tp : minorPairs_)
+    {
+        // Each side's traction (and its work) with half the weight, the
+        // mass and what it carries from the upwind side: the flux is then
+        // continuous in uFace (an upwind traction would jump as uFace
+        // changes sign, e.g. at the plane of a symmetric impact)
+        for (int side = 0; side < 2; ++side)
+        {
+            const bool fromLeft = (side == 0);
+            const int up = fromLeft ? tp.k : tp.j;
+            const phaseSide& K = fromLeft ? sideL[tp.k] : sideR[tp.j];
+            const cobasis::vector s(K.sigma*n);
+
+            faceResult_[up].addFlux(0.5*tp.S, 0, -s, -s.dot(K.U), K);
+
+            if (uFace != 0 && fromLeft == (uFace > 0))
+            {
+                const double massFlux = K.rho*uFace;
+                faceResult_[up].addFlux
+                (
+                    tp.S, massFlux, massFlux*K.U, massFlux*K.E, K
+                );
+            }
+        }
+        const double S = tp.S;
+
+        const phaseSide& sl = sideL[tp.k];
+        const phaseSide& sr = sideR[tp.j];
+        faceResult_[tp.k].vStarSum += S*(sl.U + (uFace - sl.U.dot(n))*n);
+        faceResult_[tp.k].vStarWeight += S;
+        faceResult_[tp.j].vStarSum += S*(sr.U + (uFace - sr.U.dot(n))*n);
+        faceResult_[tp.j].vStarWeight += S;
+    }
+}
+
+
+
+void Foam::demFaceAssembly::addToCell
+(
+    const label c,
+    const int side,
+    const scalar magSf
+)
+{
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        const faceContribution& fc = faceResult_[k];
+        dAlpha_[k][c] += magSf*fc.dAlpha[side];
+        dMass_[k][c] += magSf*fc.dMass[side];
+        dMomentum_[k][c] += magSf*fc.dMomentum[side];
+        dEnergy_[k][c] += magSf*fc.dEnergy[side];
+        for (size_t i = 0; i < dMassCarried_[k].size(); ++i)
+        {
+            dMassCarried_[k][i][c] += magSf*fc.dMassCarried[side][i];
+        }
+    }
+}
+
+
+
+void Foam::demFaceAssembly::internalContacts
+(
+    const label c,
+    const cobasis::vector& nOut,
+    const scalar magSf,
+    const std::vector<phaseSide>& face,
+    const reconstruction& rec
+)
+{
+    // Time-centred alphas of the cell first: most cells hold the same
+    // alphas at the centre and on the face, and need no contact
+    rec.centreAlphas(c, alphaScratch_);
+
+    bool differ = false;
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if (alphaScratch_[k] != face[k].alpha) differ = true;
+    }
+    if (!differ)
+    {
+        return;
+    }
+
+    // The time-centred state, built once per cell and step
+    if (centreStamp_[c] != stamp_)
+    {
+        centreStamp_[c] = stamp_;
+        centres_[c].resize(nPhases_);
+        rec.centreState(c, centres_[c]);
+    }
+    solveFace(centres_[c], face, faceFrame::rotation(nOut));
+
+    // Both sides are cell c: the conservative parts cancel exactly, the
+    // Lagrangian parts remain
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        const faceContribution& fc = faceResult_[k];
+        dAlpha_[k][c] += magSf*(fc.dAlpha[0] + fc.dAlpha[1]);
+        dMomentum_[k][c] += magSf*(fc.dMomentum[0] + fc.dMomentum[1]);
+        dEnergy_[k][c] += magSf*(fc.dEnergy[0] + fc.dEnergy[1]);
+    }
+}
+
+

@@ -1,0 +1,314 @@
+#include "demSolver.H"
+#include "faceFrame.H"
+#include "wedgePolyPatch.H"
+#include "foamEigen.H"
+
+using Foam::foamEigen::toEigen;
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::demSolver::demSolver
+(
+    phaseSystem& phases,
+    const dictionary& schemeDict
+)
+:
+    phases_(phases),
+    mesh_(phases.mesh()),
+    nPhases_(phases.size()),
+    magSf_(mag(mesh_.faceAreas())),
+    frames_(mesh_.nFaces()),
+    cells_(phases),
+    timeStep_(phases, magSf_),
+    reconstruction_(reconstruction::New(phases, cells_, schemeDict)),
+    boundaryStates_(phases),
+    assembly_(phases, schemeDict),
+    cobasis_(phases, schemeDict),
+    acceleration_(nullptr),
+    faceO_(nPhases_),
+    faceN_(nPhases_),
+    ghost_(nPhases_)
+{
+    const vectorField& Sf = mesh_.faceAreas();
+    forAll(Sf, facei)
+    {
+        frames_[facei] =
+            faceFrame::rotation(toEigen(Sf[facei]/magSf_[facei]));
+    }
+
+    Info<< "Discrete equations: Riemann solver " << assembly_.riemann().type()
+        << ", reconstruction ";
+    reconstruction_->describe(Info);
+    Info<< ", cobasis rotation "
+        << (cobasis_.keepRotation() ? "keep" : "discard") << nl << endl;
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::demSolver::internalFaces()
+{
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& Sf = mesh_.faceAreas();
+    const vectorField& Cf = mesh_.faceCentres();
+    const vectorField& C = mesh_.cellCentres();
+    const reconstruction& rec = reconstruction_();
+    const bool centred = rec.timeCentred();
+
+    // The time-centred cobasis of a cell for the transport
+    const phaseSystem& phases = phases_;
+    const auto centredA = [&](const label c)
+    {
+        return [&, c](const label k) -> cobasis::matrix
+        {
+            return toEigen(phases.A(k)[c]) + rec.dtA(k, c);
+        };
+    };
+
+    forAll(nei, facei)
+    {
+        const label o = own[facei];
+        const label nb = nei[facei];
+
+        rec.faceState(o, Cf[facei] - C[o], faceO_);
+        rec.faceState(nb, Cf[facei] - C[nb], faceN_);
+
+        assembly_.solveFace(faceO_, faceN_, frames_[facei]);
+
+        const cobasis::vector S(toEigen(Sf[facei]));
+        assembly_.addToCell(o, 0, magSf_[facei]);
+        assembly_.addToCell(nb, 1, magSf_[facei]);
+        cobasis_.addFace(o, S, faceO_, faceN_, assembly_, centredA(o));
+        cobasis_.addFace(nb, -S, faceN_, faceO_, assembly_, centredA(nb));
+
+        if (centred)
+        {
+            const cobasis::vector n(S/magSf_[facei]);
+            assembly_.internalContacts(o, n, magSf_[facei], faceO_, rec);
+            assembly_.internalContacts(nb, -n, magSf_[facei], faceN_, rec);
+        }
+    }
+}
+
+
+void Foam::demSolver::boundaryFaces()
+{
+    const vectorField& Sf = mesh_.faceAreas();
+    const vectorField& Cf = mesh_.faceCentres();
+    const vectorField& C = mesh_.cellCentres();
+    const reconstruction& rec = reconstruction_();
+    const bool centred = rec.timeCentred();
+    const boundaryKinds& kinds = phases_.boundary();
+
+    const phaseSystem& phases = phases_;
+    const auto centredA = [&](const label c)
+    {
+        return [&, c](const label k) -> cobasis::matrix
+        {
+            return toEigen(phases.A(k)[c]) + rec.dtA(k, c);
+        };
+    };
+
+    // The cell's face state of a face that is not coupled
+    std::vector<phaseSide> cellFace(nPhases_);
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        const boundaryKinds::kind kind = kinds[patchi];
+        if (kind == boundaryKinds::kind::empty)
+        {
+            continue;
+        }
+        const bool coupled = (kind == boundaryKinds::kind::coupled);
+        const bool wedge = (kind == boundaryKinds::kind::wedge);
+
+        const fvPatch& patch = mesh_.boundary()[patchi];
+        const labelUList& fc = patch.faceCells();
+        const label start = patch.start();
+        const bool cellIsLeft = !coupled || kinds.coupledLeft(patchi);
+
+        // Wedge faces: reconstruct at the image of the face centroid in
+        // the cell's plane, then rotate into the face plane by half the
+        // wedge angle: both sides take that state (section 7)
+        cobasis::matrix T(cobasis::matrix::Identity());
+        tensor Tinv(tensor::I);
+        if (wedge)
+        {
+            const wedgePolyPatch& wp =
+                refCast<const wedgePolyPatch>(patch.patch());
+            T = toEigen(wp.faceT());
+            Tinv = wp.faceT().T();
+        }
+
+        forAll(fc, i)
+        {
+            const label facei = start + i;
+            const label celli = fc[i];
+            const cobasis::vector S(toEigen(Sf[facei]));
+            const cobasis::vector n(S/magSf_[facei]);
+
+            if (!coupled)
+            {
+                const vector d
+                (
+                    wedge
+                  ? vector((Tinv & Cf[facei]) - C[celli])
+                  : vector(Cf[facei] - C[celli])
+                );
+                rec.faceState(celli, d, cellFace);
+            }
+            // (a wedge face is never coupled: its rotation below acts on
+            // cellFace)
+            const std::vector<phaseSide>& side =
+                coupled ? boundaryStates_.coupledOwn(patchi, i) : cellFace;
+
+            if (centred)
+            {
+                assembly_.internalContacts
+                (
+                    celli, n, magSf_[facei], side, rec
+                );
+            }
+
+            if (wedge)
+            {
+                for (label k = 0; k < nPhases_; ++k)
+                {
+                    phaseSide& s = cellFace[k];
+                    s.U = T*s.U;
+                    s.A = s.A*T.transpose();
+                    s.sigma = T*s.sigma*T.transpose();
+                }
+            }
+
+            boundaryStates_.ghost(patchi, i, n, side, ghost_, rec);
+
+            if (cellIsLeft)
+            {
+                assembly_.solveFace(side, ghost_, frames_[facei]);
+            }
+            else
+            {
+                // Same orientation as on the neighbouring processor
+                assembly_.solveFace(ghost_, side, faceFrame::rotation(-n));
+            }
+
+            assembly_.addToCell(celli, cellIsLeft ? 0 : 1, magSf_[facei]);
+            cobasis_.addFace
+            (
+                celli, S, side, ghost_, assembly_, centredA(celli)
+            );
+        }
+    }
+}
+
+
+void Foam::demSolver::newState(const scalar dt, conservedState& q) const
+{
+    const label nCells = mesh_.nCells();
+    const vectorField& U = phases_.U().primitiveField();
+    const scalarField& V = mesh_.V();
+    q.alpha.resize(nPhases_);
+    q.mass.resize(nPhases_);
+    q.momentum.resize(nPhases_);
+    q.energy.resize(nPhases_);
+    q.A.resize(nPhases_);
+    q.carried.resize(nPhases_);
+
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        q.alpha[k].resize(nCells);
+        q.mass[k].resize(nCells);
+        q.momentum[k].resize(nCells);
+        q.energy[k].resize(nCells);
+        q.A[k].resize(nCells);
+        q.carried[k].resize(phases_[k].nCarried());
+        for (auto& v : q.carried[k])
+        {
+            v.resize(nCells);
+        }
+
+        const bool solid = phases_.phase(k).solid();
+        const scalarField& alpha = phases_.alpha(k).primitiveField();
+        const scalarField& rho = phases_.rho(k).primitiveField();
+        const tensorField& A = phases_.A(k).primitiveField();
+        const phaseModel& phase = phases_[k];
+        const label nCarried = phase.nCarried();
+
+        for (label c = 0; c < nCells; ++c)
+        {
+            const scalar dtByV = dt/V[c];
+            const scalar m = alpha[c]*rho[c];
+            q.alpha[k][c] = alpha[c] + dtByV*assembly_.dAlpha(k, c);
+            q.mass[k][c] = m + dtByV*assembly_.dMass(k, c);
+            q.momentum[k][c] =
+                m*toEigen(U[c]) + dtByV*assembly_.dMomentum(k, c);
+            q.energy[k][c] = m*cells_.E(k, c) + dtByV*assembly_.dEnergy(k, c);
+
+            // Carried variables per unit mass: the upwind values carried
+            // by the mass fluxes, kept within their bounds (a phase left
+            // without mass keeps its values)
+            for (label i = 0; i < nCarried; ++i)
+            {
+                const scalar v = phase.carried(i)[c];
+                if (q.mass[k][c] > 0)
+                {
+                    const carriedVariable& var = phase.carriedInfo()[i];
+                    q.carried[k][i][c] = min
+                    (
+                        max
+                        (
+                            (m*v + dtByV*assembly_.dMassCarried(k, i, c))
+                           /q.mass[k][c],
+                            var.lower
+                        ),
+                        var.upper
+                    );
+                }
+                else
+                {
+                    q.carried[k][i][c] = v;
+                }
+            }
+
+            const cobasis::matrix Ac(toEigen(A[c]));
+            if (solid)
+            {
+                // Time-centred cobasis in the stretching term
+                q.A[k][c] = cobasis_.update
+                (
+                    k, c, dt, V[c], Ac, Ac + reconstruction_->dtA(k, c)
+                );
+            }
+            else
+            {
+                q.A[k][c] = Ac;
+            }
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::demSolver::prepare()
+{
+    phases_.correctBoundaryConditions();
+    cells_.update();
+}
+
+
+void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
+{
+    reconstruction_->update(dt, acceleration_);
+    boundaryStates_.update(reconstruction_());
+    assembly_.reset();
+    cobasis_.reset();
+
+    internalFaces();
+    boundaryFaces();
+
+    newState(dt, q);
+}

@@ -1,0 +1,334 @@
+#include "phaseModel.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::phaseModel::readRelaxationPath(const dictionary& dict)
+{
+    const word& name = law_.name();
+    const equationOfState& eos = law_.eos();
+
+    const word path
+    (
+        dict.getOrDefault<word>("pressureRelaxation", "constantPressure")
+    );
+    if (path != "constantPressure" && path != "isentropic")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Phase " << name << ": unknown pressureRelaxation "
+            << path << "; valid: (constantPressure isentropic)"
+            << exit(FatalIOError);
+    }
+    if (path == "isentropic" && law_.solid())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Phase " << name << ": pressureRelaxation isentropic is"
+            << " for fluids only" << exit(FatalIOError);
+    }
+    isentropicRelaxation_ = (path == "isentropic");
+
+    if (dict.found("cavitationPressure"))
+    {
+        pCavitation_ = dict.get<scalar>("cavitationPressure");
+        if (!isentropicRelaxation_ || !(pCavitation_ > eos.pMin()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Phase " << name << ": cavitationPressure "
+                << pCavitation_ << " needs pressureRelaxation"
+                << " isentropic and a value above "
+                << eos.pMin() << exit(FatalIOError);
+        }
+    }
+    if (dict.found("referenceIsentrope"))
+    {
+        const Pair<scalar> ref(dict.get<Pair<scalar>>("referenceIsentrope"));
+        if
+        (
+            !isentropicRelaxation_ || !(ref.first() > 0)
+         || !(ref.second() > eos.pMin())
+        )
+        {
+            FatalIOErrorInFunction(dict)
+                << "Phase " << name << ": referenceIsentrope " << ref
+                << " needs pressureRelaxation isentropic, rho > 0 and"
+                << " p > " << eos.pMin() << exit(FatalIOError);
+        }
+        isentrope_ =
+            Pair<scalar>(ref.first(), eos.e(ref.first(), ref.second()));
+    }
+}
+
+
+void Foam::phaseModel::initCobasis(const bool readA)
+{
+    tensorField& A = A_->primitiveFieldRef();
+    const scalarField& rho = rho_.primitiveField();
+
+    if (!law_.solid())
+    {
+        A = tensor::I;
+        return;
+    }
+
+    const scalar rho0 = law_.rho0();
+    forAll(A, celli)
+    {
+        if (!readA)
+        {
+            A[celli] = cbrt(rho[celli]/rho0)*tensor::I;
+            continue;
+        }
+        const scalar detA = det(A[celli]);
+        if (!(detA > 0))
+        {
+            FatalErrorInFunction
+                << "A." << name() << " has det = " << detA
+                << " <= 0 in cell " << celli << exit(FatalError);
+        }
+        A[celli] *= cbrt(rho[celli]/(rho0*detA));
+    }
+}
+
+
+void Foam::phaseModel::checkInitialState() const
+{
+    const equationOfState& eos = law_.eos();
+    const scalarField& rho = rho_.primitiveField();
+    const scalarField& pk = p_->primitiveField();
+    forAll(rho, celli)
+    {
+        if (!(rho[celli] > 0) || !(pk[celli] > eos.pMin()))
+        {
+            FatalErrorInFunction
+                << "Phase " << name() << " starts in cell " << celli
+                << " with rho = " << rho[celli] << ", p = " << pk[celli]
+                << ": need rho > 0 and p > " << eos.pMin()
+                << exit(FatalError);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::phaseModel::phaseModel
+(
+    const label index,
+    const word& name,
+    const dictionary& dict,
+    const volScalarField& pMixture,
+    const wordList& derivedTypes,
+    const wordList& mirrorTypes
+)
+:
+    index_(index),
+    law_(name, dict),
+    plastic_(),
+    isentropicRelaxation_(false),
+    isentrope_(-1, 0),
+    pCavitation_(-GREAT),
+    alpha_
+    (
+        IOobject
+        (
+            "alpha." + name,
+            pMixture.time().timeName(),
+            pMixture.mesh(),
+            IOobject::MUST_READ,
+            IOobject::AUTO_WRITE
+        ),
+        pMixture.mesh()
+    ),
+    rho_
+    (
+        IOobject
+        (
+            "rho." + name,
+            pMixture.time().timeName(),
+            pMixture.mesh(),
+            IOobject::MUST_READ,
+            IOobject::AUTO_WRITE
+        ),
+        pMixture.mesh()
+    ),
+    epsilonPIndex_(-1),
+    plasticWorkIndex_(-1)
+{
+    const fvMesh& mesh = pMixture.mesh();
+    const word timeName(mesh.time().timeName());
+
+    readRelaxationPath(dict);
+
+    if (law_.solid())
+    {
+        plastic_ = plasticModel::New(name, dict.subDict("plasticity"));
+    }
+    else
+    {
+        dictionary noneDict;
+        noneDict.add("type", "none");
+        plastic_ = plasticModel::New(name, noneDict);
+    }
+
+    IOobject pIO
+    (
+        "p." + name,
+        timeName,
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::AUTO_WRITE
+    );
+    if (pIO.typeHeaderOk<volScalarField>(true))
+    {
+        p_.reset(new volScalarField(pIO, mesh));
+    }
+    else
+    {
+        pIO.readOpt() = IOobject::NO_READ;
+        p_.reset(new volScalarField(pIO, pMixture));
+    }
+
+    IOobject AIO
+    (
+        "A." + name,
+        timeName,
+        mesh,
+        IOobject::MUST_READ,
+        law_.solid() ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+    );
+    const bool readA =
+        law_.solid() && AIO.typeHeaderOk<volTensorField>(true);
+    if (readA)
+    {
+        A_.reset(new volTensorField(AIO, mesh));
+    }
+    else
+    {
+        AIO.readOpt() = IOobject::NO_READ;
+        A_.reset
+        (
+            new volTensorField
+            (
+                AIO,
+                mesh,
+                dimensionedTensor("I", dimless, tensor::I),
+                mirrorTypes
+            )
+        );
+    }
+
+    // Carried variables: those of the models, then the passive tracers
+    if (law_.solid())
+    {
+        carriedInfo_.append(plastic_->carriedVariables());
+    }
+    for
+    (
+        const word& tracer
+      : dict.getOrDefault<wordList>("passiveScalars", wordList())
+    )
+    {
+        carriedInfo_.append(carriedVariable(tracer, dimless));
+    }
+    if (carriedInfo_.size() > maxCarried)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Phase " << name << " carries " << carriedInfo_.size()
+            << " variables with its mass; at most " << label(maxCarried)
+            << exit(FatalIOError);
+    }
+
+    carried_.setSize(carriedInfo_.size());
+    forAll(carriedInfo_, i)
+    {
+        const carriedVariable& var = carriedInfo_[i];
+        if (carriedIndex(var.name) != i)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Phase " << name << ": the variable " << var.name
+                << " is carried twice" << exit(FatalIOError);
+        }
+
+        // The boundary values of a carried variable are never used (faces
+        // carry the upwind cell value): zeroGradient, whatever the file says
+        IOobject io
+        (
+            var.name + "." + name,
+            timeName,
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        );
+        carried_.set
+        (
+            i,
+            new volScalarField
+            (
+                io,
+                mesh,
+                dimensionedScalar(var.name, var.dimensions, var.initial),
+                derivedTypes
+            )
+        );
+        if (io.typeHeaderOk<volScalarField>(true))
+        {
+            carried_[i].primitiveFieldRef() =
+                volScalarField(io, mesh).primitiveField();
+        }
+    }
+    epsilonPIndex_ = carriedIndex("epsilonP");
+    plasticWorkIndex_ = carriedIndex("plasticWork");
+
+    checkInitialState();
+    initCobasis(readA);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::phaseModel::carriedIndex(const word& name) const
+{
+    forAll(carriedInfo_, i)
+    {
+        if (carriedInfo_[i].name == name)
+        {
+            return i;
+        }
+    }
+    return -1;
+}
+
+
+void Foam::phaseModel::correctBoundaryConditions()
+{
+    alpha_.correctBoundaryConditions();
+    rho_.correctBoundaryConditions();
+    p_->correctBoundaryConditions();
+    A_->correctBoundaryConditions();
+}
+
+
+void Foam::phaseModel::saveState()
+{
+    alphaSave_ = alpha_.primitiveField();
+    rhoSave_ = rho_.primitiveField();
+    pSave_ = p_->primitiveField();
+    ASave_ = A_->primitiveField();
+    carriedSave_.setSize(carried_.size());
+    forAll(carried_, i)
+    {
+        carriedSave_[i] = carried_[i].primitiveField();
+    }
+}
+
+
+void Foam::phaseModel::restoreState()
+{
+    alpha_.primitiveFieldRef() = alphaSave_;
+    rho_.primitiveFieldRef() = rhoSave_;
+    p_->primitiveFieldRef() = pSave_;
+    A_->primitiveFieldRef() = ASave_;
+    forAll(carried_, i)
+    {
+        carried_[i].primitiveFieldRef() = carriedSave_[i];
+    }
+}

@@ -1,0 +1,519 @@
+#include "MUSCLHancock.H"
+#include "alphaClosure.H"
+#include "foamEigen.H"
+#include "fvc.H"
+#include "gaussGrad.H"
+#include "linear.H"
+#include "addToRunTimeSelectionTable.H"
+
+using Foam::foamEigen::toEigen;
+
+namespace Foam
+{
+namespace reconstructions
+{
+    defineTypeNameAndDebug(MUSCLHancock, 0);
+    addToRunTimeSelectionTable(reconstruction, MUSCLHancock, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::reconstructions::MUSCLHancock::MUSCLHancock
+(
+    const phaseSystem& phases,
+    const cellStates& cells,
+    const dictionary& dict
+)
+:
+    reconstruction(phases, cells, dict),
+    alphaCompression_(dict.getOrDefault<scalar>("alphaCompression", 1)),
+    cobasisLimiter_(),
+    slopes_(nPhases_),
+    alphaScratch_(nPhases_)
+{
+    if (!(alphaCompression_ >= 1 && alphaCompression_ <= 4))
+    {
+        FatalIOErrorInFunction(dict)
+            << "discreteEquations alphaCompression " << alphaCompression_
+            << " is not in [1, 4]" << exit(FatalIOError);
+    }
+
+    const word limiter
+    (
+        dict.getOrDefault<word>("cobasisLimiter", "cellLimited")
+    );
+    if (limiter != "cellLimited" && limiter != "none")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown cobasisLimiter " << limiter
+            << "; valid: (cellLimited none)" << exit(FatalIOError);
+    }
+    if (limiter == "cellLimited")
+    {
+        // A wall's ghost is the cell's mirror image (docs/numerics.md
+        // section 7)
+        cobasisLimiter_.reset
+        (
+            new cellLimiter(mesh_, phases.boundary().limiterNeighbours(false))
+        );
+    }
+
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        slopes_[k].resize(mesh_.nCells());
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::reconstructions::MUSCLHancock::alphaRange
+(
+    const volScalarField& alpha,
+    scalarField& aMin,
+    scalarField& aMax
+) const
+{
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+
+    aMin = alpha.primitiveField();
+    aMax = alpha.primitiveField();
+    forAll(nei, facei)
+    {
+        const label o = own[facei];
+        const label n = nei[facei];
+        aMin[o] = min(aMin[o], alpha[n]);
+        aMax[o] = max(aMax[o], alpha[n]);
+        aMin[n] = min(aMin[n], alpha[o]);
+        aMax[n] = max(aMax[n], alpha[o]);
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (phases_.boundary()[patchi] != boundaryKinds::kind::coupled) continue;
+        const scalarField nbr
+        (
+            alpha.boundaryField()[patchi].patchNeighbourField()
+        );
+        const labelUList& fc = mesh_.boundary()[patchi].faceCells();
+        forAll(fc, i)
+        {
+            aMin[fc[i]] = min(aMin[fc[i]], nbr[i]);
+            aMax[fc[i]] = max(aMax[fc[i]], nbr[i]);
+        }
+    }
+}
+
+
+
+void Foam::reconstructions::MUSCLHancock::compressAlphaSlopes
+(
+    const volScalarField& alpha,
+    const scalarField& aMin,
+    const scalarField& aMax,
+    vectorField& g
+) const
+{
+    const label nCells = mesh_.nCells();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& Cf = mesh_.faceCentres();
+    const vectorField& C = mesh_.cellCentres();
+
+    // Largest factor of g that keeps every face value in range
+    scalarField factor(nCells, alphaCompression_);
+    const auto limit = [&](const label c, const vector& d)
+    {
+        const scalar delta = g[c] & d;
+        if (delta > VSMALL)
+        {
+            factor[c] = min(factor[c], (aMax[c] - alpha[c])/delta);
+        }
+        else if (delta < -VSMALL)
+        {
+            factor[c] = min(factor[c], (aMin[c] - alpha[c])/delta);
+        }
+    };
+    forAll(nei, facei)
+    {
+        limit(own[facei], Cf[facei] - C[own[facei]]);
+        limit(nei[facei], Cf[facei] - C[nei[facei]]);
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (phases_.boundary().passive(patchi)) continue;
+        const fvPatch& patch = mesh_.boundary()[patchi];
+        const labelUList& fc = patch.faceCells();
+        forAll(fc, i)
+        {
+            limit(fc[i], Cf[patch.start() + i] - C[fc[i]]);
+        }
+    }
+
+    forAll(g, c)
+    {
+        g[c] *= max(factor[c], scalar(0));
+    }
+}
+
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::reconstructions::MUSCLHancock::centreAlphas
+(
+    const label c,
+    std::vector<double>& alpha
+) const
+{
+    // A minor phase keeps its cell value; the largest closes the sum
+    scalar sumAlpha = 0;
+    label main = 0;
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        const scalar a = phases_.alpha(k)[c];
+        alpha[k] =
+            a >= phases_.alphaMinor()
+          ? min(max(a + slopes_[k][c].dtAlpha, 0.0), 1.0)
+          : a;
+        if (alpha[k] > alpha[main]) main = k;
+    }
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if (k != main) sumAlpha += alpha[k];
+    }
+    alpha[main] = 1 - sumAlpha;
+}
+
+
+void Foam::reconstructions::MUSCLHancock::describe(Ostream& os) const
+{
+    os  << "MUSCL-Hancock, velocity limiter "
+        << (gradUCalc_.limited() ? "cellLimited" : "none")
+        << ", cobasis limiter "
+        << (cobasisLimiter_.valid() ? "cellLimited" : "none");
+    if (alphaCompression_ > 1)
+    {
+        os  << ", volume fraction slopes steepened by " << alphaCompression_;
+    }
+}
+
+
+void Foam::reconstructions::MUSCLHancock::update
+(
+    const scalar dt,
+    const vectorField* acceleration
+)
+{
+    const label nCells = mesh_.nCells();
+    const volVectorField& Ufield = phases_.U();
+    const vectorField& U = Ufield.primitiveField();
+    gradUCalc_.calculate(Ufield, gradU_);
+    const tensorField& gradU = gradU_;
+    const scalar halfDt = 0.5*dt;
+
+    scalarField minAlpha(nCells);
+    scalarField maxAlpha(nCells);
+    tensorField limiterA;
+
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        const hyperelasticPhase& ph = phases_.phase(k);
+        const volScalarField& alpha = phases_.alpha(k);
+        const scalarField& rho = phases_.rho(k).primitiveField();
+        const scalarField& p = phases_.p(k).primitiveField();
+        const volTensorField& A = phases_.A(k);
+
+        // Minor-phase rule: below alphaMinor in the cell or any neighbour
+        alphaRange(alpha, minAlpha, maxAlpha);
+
+        // A single phase has alpha = 1 everywhere: no slope to compute
+        const tmp<volVectorField> tgAlpha
+        (
+            nPhases_ > 1
+          ? fvc::grad(alpha)
+          : tmp<volVectorField>
+            (
+                new volVectorField
+                (
+                    IOobject("gradAlpha", mesh_.time().timeName(), mesh_),
+                    mesh_,
+                    dimensionedVector(dimless/dimLength, Zero)
+                )
+            )
+        );
+        const tmp<volVectorField> tgRho(fvc::grad(phases_.rho(k)));
+        const tmp<volVectorField> tgP(fvc::grad(phases_.p(k)));
+        vectorField gAlpha(tgAlpha().primitiveField());
+        if (alphaCompression_ > 1 && nPhases_ > 1)
+        {
+            compressAlphaSlopes(alpha, minAlpha, maxAlpha, gAlpha);
+        }
+        const vectorField& gRho = tgRho().primitiveField();
+        const vectorField& gP = tgP().primitiveField();
+
+        // Cobasis slopes: Gauss linear (the face values of A's boundary
+        // conditions), limited with mirror neighbours
+        PtrList<volVectorField> gA(ph.solid() ? 9 : 0);
+        forAll(gA, cmpt)
+        {
+            gA.set
+            (
+                cmpt,
+                fv::gaussGrad<scalar>::gradf
+                (
+                    linearInterpolate(A.component(cmpt)()),
+                    "gradA"
+                ).ptr()
+            );
+        }
+        if (ph.solid() && cobasisLimiter_.valid())
+        {
+            cobasisLimiter_->factors
+            (
+                A,
+                [&gA](const label celli, const vector& dx)
+                {
+                    tensor dA;
+                    for (direction cmpt = 0; cmpt < 9; ++cmpt)
+                    {
+                        dA[cmpt] = dx & gA[cmpt][celli];
+                    }
+                    return dA;
+                },
+                limiterA
+            );
+            forAll(gA, cmpt)
+            {
+                vectorField& g = gA[cmpt].primitiveFieldRef();
+                forAll(g, celli)
+                {
+                    g[celli] *= limiterA[celli][cmpt];
+                }
+            }
+        }
+
+        for (label c = 0; c < nCells; ++c)
+        {
+            cellSlopes& sl = slopes_[k][c];
+            const cobasis::vector u(toEigen(U[c]));
+
+            sl.gAlpha = toEigen(gAlpha[c]);
+            sl.dtAlpha = -halfDt*u.dot(sl.gAlpha);
+            sl.minor = minAlpha[c] < phases_.alphaMinor();
+
+            if (sl.minor)
+            {
+                sl.gRho.setZero();
+                sl.gP.setZero();
+                sl.gU.setZero();
+                for (int i = 0; i < 3; ++i) sl.gA[i].setZero();
+                sl.dtRho = 0;
+                sl.dtP = 0;
+                sl.dtU.setZero();
+                if (acceleration)
+                {
+                    sl.dtU = halfDt*toEigen((*acceleration)[c]);
+                }
+                sl.dtA.setZero();
+                continue;
+            }
+
+            sl.gRho = toEigen(gRho[c]);
+            sl.gP = toEigen(gP[c]);
+            sl.gU = toEigen(gradU[c]);
+            for (int i = 0; i < 3; ++i)
+            {
+                if (ph.solid())
+                {
+                    for (int cmpt = 0; cmpt < 9; ++cmpt)
+                    {
+                        sl.gA[i](cmpt/3, cmpt%3) = gA[cmpt][c][i];
+                    }
+                }
+                else
+                {
+                    sl.gA[i].setZero();
+                }
+            }
+            // Primitive equations, with L_ij = du_i/dx_j = gU(j, i)
+            const cobasis::matrix L(sl.gU.transpose());
+            const double divU = L.trace();
+            const cobasis::matrix Ac(toEigen(A[c]));
+
+            cobasis::vector divSigma(-sl.gP);
+            if (ph.solid())
+            {
+                for (int j = 0; j < 3; ++j)
+                {
+                    divSigma += ph.elastic().dS(Ac, sl.gA[j]).col(j);
+                }
+            }
+
+            sl.dtRho = -halfDt*(u.dot(sl.gRho) + rho[c]*divU);
+            sl.dtP =
+                -halfDt
+               *(u.dot(sl.gP) + rho[c]*ph.eos().c2(rho[c], p[c])*divU);
+            sl.dtU = -halfDt*(L*u - divSigma/rho[c]);
+            if (acceleration)
+            {
+                sl.dtU += halfDt*toEigen((*acceleration)[c]);
+            }
+            if (ph.solid())
+            {
+                sl.dtA =
+                    -halfDt
+                   *(
+                        u(0)*sl.gA[0] + u(1)*sl.gA[1] + u(2)*sl.gA[2]
+                      + Ac*L
+                    );
+            }
+            else
+            {
+                sl.dtA.setZero();
+            }
+        }
+    }
+}
+
+
+
+void Foam::reconstructions::MUSCLHancock::faceState
+(
+    const label celli,
+    const vector& d,
+    std::vector<phaseSide>& s
+) const
+{
+    const vector& Uc = phases_.U()[celli];
+
+    // Second order: alpha of every phase but the cell's largest, which
+    // closes the sum; a minor phase (below alphaMinor in the cell) keeps
+    // its cell value, so it never offers the faces more than it holds
+    const cobasis::vector de(toEigen(d));
+    const scalar alphaMin = phases_.alphaMin();
+    label main = 0;
+    for (label k = 1; k < nPhases_; ++k)
+    {
+        if (phases_.alpha(k)[celli] > phases_.alpha(main)[celli]) main = k;
+    }
+    scalar sumAlpha = 0;
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if (k == main) continue;
+        const scalar ac = phases_.alpha(k)[celli];
+        const cellSlopes& sl = slopes_[k][celli];
+        alphaScratch_[k] =
+            ac < phases_.alphaMinor()
+          ? ac
+          : min(max(ac + sl.gAlpha.dot(de) + sl.dtAlpha, alphaMin), 1 - alphaMin);
+        sumAlpha += alphaScratch_[k];
+    }
+    if (sumAlpha > 1 - alphaMin)
+    {
+        for (label k = 0; k < nPhases_; ++k)
+        {
+            if (k != main) alphaScratch_[k] *= (1 - alphaMin)/sumAlpha;
+        }
+        sumAlpha = 1 - alphaMin;
+    }
+    alphaScratch_[main] = 1 - sumAlpha;
+
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        const cellSlopes& sl = slopes_[k][celli];
+        const hyperelasticPhase& ph = phases_.phase(k);
+        phaseSide& sk = s[k];
+
+        const double rhoc = phases_.rho(k)[celli];
+        const double pc = phases_.p(k)[celli];
+        const cobasis::matrix Ac(toEigen(phases_.A(k)[celli]));
+
+        sk.alpha = alphaScratch_[k];
+        cellCarried(k, celli, sk);
+        sk.rho = rhoc + sl.gRho.dot(de) + sl.dtRho;
+        sk.p = pc + sl.gP.dot(de) + sl.dtP;
+        sk.U = toEigen(Uc) + sl.gU.transpose()*de + sl.dtU;
+        sk.A = Ac + de(0)*sl.gA[0] + de(1)*sl.gA[1] + de(2)*sl.gA[2] + sl.dtA;
+
+        if
+        (
+            !(sk.rho > 0) || !(sk.p > ph.eos().pMin())
+         || (ph.solid() && !(sk.A.determinant() > 0))
+        )
+        {
+            // An inadmissible predicted state: the cell value
+            sk.rho = rhoc;
+            sk.p = pc;
+            sk.U = toEigen(Uc);
+            sk.A = Ac;
+        }
+        completeSide(k, sk);
+
+        // a_f^2 = c_h^2(face) + (a_cell^2 - c_h^2(cell)), >= a_cell^2/4
+        const double ac2 = sqr(cells_.a(k, celli));
+        const double a2 =
+            ph.eos().c2(sk.rho, sk.p) + ac2 - ph.eos().c2(rhoc, pc);
+        sk.a = std::sqrt(max(a2, 0.25*ac2));
+    }
+    markMinor(s);
+}
+
+
+
+void Foam::reconstructions::MUSCLHancock::centreState
+(
+    const label celli,
+    std::vector<phaseSide>& s
+) const
+{
+    const vector& Uc = phases_.U()[celli];
+
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        phaseSide& sk = s[k];
+        sk.alpha = phases_.alpha(k)[celli];
+        sk.rho = phases_.rho(k)[celli];
+        sk.p = phases_.p(k)[celli];
+        sk.U = toEigen(Uc);
+        sk.A = toEigen(phases_.A(k)[celli]);
+        sk.a = cells_.a(k, celli);
+        cellCarried(k, celli, sk);
+
+        const cellSlopes& sl = slopes_[k][celli];
+        if (sk.alpha >= phases_.alphaMinor())
+        {
+            sk.alpha = min(max(sk.alpha + sl.dtAlpha, 0.0), 1.0);
+        }
+
+        const double rho = sk.rho + sl.dtRho;
+        const double p = sk.p + sl.dtP;
+        const cobasis::matrix A(sk.A + sl.dtA);
+        const hyperelasticPhase& ph = phases_.phase(k);
+        if
+        (
+            rho > 0 && p > ph.eos().pMin()
+         && (!ph.solid() || A.determinant() > 0)
+        )
+        {
+            sk.rho = rho;
+            sk.p = p;
+            sk.U += sl.dtU;
+            sk.A = A;
+        }
+        completeSide(k, sk);
+    }
+
+    // The cell's largest phase closes the sum
+    floorAndClose
+    (
+        nPhases_,
+        0.0,
+        [&s](const label k) -> double& { return s[k].alpha; }
+    );
+    markMinor(s);
+}
+
+

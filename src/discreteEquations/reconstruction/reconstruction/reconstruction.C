@@ -1,0 +1,100 @@
+#include "reconstruction.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(reconstruction, 0);
+    defineRunTimeSelectionTable(reconstruction, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::reconstruction::reconstruction
+(
+    const phaseSystem& phases,
+    const cellStates& cells,
+    const dictionary& dict
+)
+:
+    phases_(phases),
+    mesh_(phases.mesh()),
+    nPhases_(phases.size()),
+    cells_(cells),
+    gradUCalc_
+    (
+        phases.mesh(),
+        phases.boundary().limiterNeighbours(true),
+        limitVelocity(dict)
+    ),
+    gradU_()
+{}
+
+
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+bool Foam::reconstruction::limitVelocity(const dictionary& dict)
+{
+    const word value
+    (
+        dict.getOrDefault<word>("velocityLimiter", "cellLimited")
+    );
+    if (value != "cellLimited" && value != "none")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown velocityLimiter " << value
+            << "; valid: (cellLimited none)" << exit(FatalIOError);
+    }
+    return value == "cellLimited";
+}
+
+
+void Foam::reconstruction::completeSide(const label k, phaseSide& s) const
+{
+    const hyperelasticPhase& ph = phases_.phase(k);
+    s.solid = ph.solid();
+    s.trace = s.alpha < phases_.alphaTrace();
+    s.cT = std::sqrt(ph.cT2());
+    s.sigma = ph.sigma(s.p, s.A);
+    s.E = ph.e(s.rho, s.p, s.A) + 0.5*s.U.squaredNorm();
+}
+
+
+void Foam::reconstruction::markMinor(std::vector<phaseSide>& s) const
+{
+    double rhoMix = 0;
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        rhoMix += s[k].alpha*s[k].rho;
+    }
+    const double Ymin = phases_.massFractionMinor();
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        s[k].minor =
+            s[k].alpha < phases_.alphaMinor()
+         || s[k].alpha*s[k].rho < Ymin*rhoMix;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::reconstruction::centreAlphas
+(
+    const label,
+    std::vector<double>&
+) const
+{
+    FatalErrorInFunction
+        << type() << " has no time-centred state" << abort(FatalError);
+}
+
+
+void Foam::reconstruction::centreState
+(
+    const label,
+    std::vector<phaseSide>&
+) const
+{
+    FatalErrorInFunction
+        << type() << " has no time-centred state" << abort(FatalError);
+}

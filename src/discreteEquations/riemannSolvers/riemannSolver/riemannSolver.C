@@ -1,0 +1,11 @@
+#include "riemannSolver.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(riemannSolver, 0);
+    defineRunTimeSelectionTable(riemannSolver, dictionary);
+}
+
+
+Foam::riemannSolver::riemannSolver(const dictionary&)
+{}

@@ -1,0 +1,22 @@
+#include "riemannSolver.H"
+
+Foam::autoPtr<Foam::riemannSolver> Foam::riemannSolver::New
+(
+    const dictionary& dict
+)
+{
+    const word modelType(dict.getOrDefault<word>("riemannSolver", "HLLC"));
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown riemannSolver " << modelType << nl << nl
+            << "Valid riemannSolvers are :" << nl
+            << dictionaryConstructorTablePtr_->sortedToc()
+            << exit(FatalIOError);
+    }
+
+    return cstrIter()(dict);
+}

@@ -1,0 +1,93 @@
+#include "stableTimeStep.H"
+
+Foam::stableTimeStep::stableTimeStep
+(
+    const phaseSystem& phases,
+    const scalarField& magSf
+)
+:
+    phases_(phases),
+    mesh_(phases.mesh()),
+    magSf_(magSf),
+    limitingCell_(-1),
+    limitingSpeed_(0)
+{}
+
+
+Foam::scalar Foam::stableTimeStep::deltaT(const cellStates& cells) const
+{
+    const label nCells = mesh_.nCells();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& Sf = mesh_.faceAreas();
+    const scalarField& magSf = magSf_;
+    const vectorField& U = phases_.U().primitiveField();
+
+    // Largest longitudinal speed among the phases that are not minor
+    // (above alphaMinor and massFractionMinor)
+    const scalarField& rhoMix = phases_.rhoMixture().primitiveField();
+    const scalar Ymin = phases_.massFractionMinor();
+    scalarField aMax(nCells, 0);
+    for (label k = 0; k < phases_.size(); ++k)
+    {
+        const scalarField& alpha = phases_.alpha(k).primitiveField();
+        const scalarField& rho = phases_.rho(k).primitiveField();
+        for (label celli = 0; celli < nCells; ++celli)
+        {
+            if
+            (
+                alpha[celli] >= phases_.alphaMinor()
+             && alpha[celli]*rho[celli] >= Ymin*rhoMix[celli]
+            )
+            {
+                aMax[celli] = max(aMax[celli], cells.a(k, celli));
+            }
+        }
+    }
+
+    scalarField sumLambda(nCells, 0);
+    forAll(nei, facei)
+    {
+        const scalar magS = magSf[facei];
+        const scalar lambda = max
+        (
+            mag(U[own[facei]] & Sf[facei]) + aMax[own[facei]]*magS,
+            mag(U[nei[facei]] & Sf[facei]) + aMax[nei[facei]]*magS
+        );
+        sumLambda[own[facei]] += lambda;
+        sumLambda[nei[facei]] += lambda;
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        // No wave crosses an empty or a wedge face (axisymmetry): counting
+        // the wedge faces would cut the step by the wedge angle near the axis
+        if (phases_.boundary().passive(patchi))
+        {
+            continue;
+        }
+        const fvPatch& patch = mesh_.boundary()[patchi];
+        const labelUList& fc = patch.faceCells();
+        const vectorField& pSf = patch.Sf();
+        forAll(fc, i)
+        {
+            sumLambda[fc[i]] +=
+                mag(U[fc[i]] & pSf[i]) + aMax[fc[i]]*mag(pSf[i]);
+        }
+    }
+
+    scalar dt = GREAT;
+    limitingCell_ = -1;
+    const scalarField& V = mesh_.V();
+    forAll(V, celli)
+    {
+        if (sumLambda[celli] > 0 && 2*V[celli]/sumLambda[celli] < dt)
+        {
+            dt = 2*V[celli]/sumLambda[celli];
+            limitingCell_ = celli;
+        }
+    }
+    limitingSpeed_ = limitingCell_ >= 0 ? aMax[limitingCell_] : 0;
+    return returnReduce(dt, minOp<scalar>());
+}
+
+
