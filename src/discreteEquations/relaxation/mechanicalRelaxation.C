@@ -474,7 +474,7 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
             {
                 const scalar heat = phases_.plastic(k).correct
                 (
-                    q.A[k][c], phases_.epsilonP(k)[c], ph.elastic(), dt
+                    q.A[k][c], phases_.epsilonP(k)[c], ph.elastic(), dt, 0 // T: wired when the equation of state provides it
                 );
                 eh0_[k] += heat;
                 phases_.plasticWork(k)[c] += heat;
