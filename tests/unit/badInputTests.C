@@ -137,6 +137,31 @@ TEST(badInput, validInputIsAccepted)
             dictFrom("type vonMises; sigmaY0 4e8; H 1e8; tau 1e-6; n 2;")
         )
     );
+    EXPECT_NO_THROW
+    (
+        plasticModel::New
+        (
+            "copper",
+            dictFrom
+            (
+                "type vonMises; yieldStress { type constant; sigmaY 4e8; }"
+                " tau 0;"
+            )
+        )
+    );
+    EXPECT_NO_THROW
+    (
+        plasticModel::New
+        (
+            "copper",
+            dictFrom
+            (
+                "type vonMises;"
+                " yieldStress { type linear; sigmaY0 4e8; H 0; }"
+                " tau 1e-6; n 2;"
+            )
+        )
+    );
     EXPECT_NO_THROW(plasticModel::New("copper", dictFrom("type none;")));
 }
 
@@ -348,5 +373,95 @@ TEST(badInput, fluidWithElasticity)
         "water",
         phaseText("fluid", "type separable; rho0 1000; mu 1e6; a 0;"),
         {"water", "fluid", "elasticity"}
+    );
+}
+
+
+TEST(badInput, yieldStress)
+{
+    // The yieldStress sub-dictionary: every message names the phase and
+    // the entry
+    expectPlasticityError
+    (
+        "type vonMises; yieldStress { type johnsonCook; A 9e7; } tau 0;",
+        {"johnsonCook", "yieldStress", "copper", "constant", "linear"}
+    );
+    expectPlasticityError
+    (
+        "type vonMises; yieldStress { sigmaY 4e8; } tau 0;",
+        {"yieldStress", "type", "copper", "constant", "linear"}
+    );
+    expectPlasticityError
+    (
+        "type vonMises; yieldStress { type constant; } tau 0;",
+        {"yieldStress", "constant", "sigmaY", "copper"}
+    );
+    expectPlasticityError
+    (
+        "type vonMises; yieldStress { type constant; sigmaY 0; } tau 0;",
+        {"yieldStress", "sigmaY = 0", "positive", "copper"}
+    );
+    expectPlasticityError
+    (
+        "type vonMises; yieldStress { type constant; sigmaY -4e8; } tau 0;",
+        {"yieldStress", "sigmaY = -4e+08", "copper"}
+    );
+    expectPlasticityError
+    (
+        "type vonMises; yieldStress { type linear; sigmaY0 4e8; } tau 0;",
+        {"yieldStress", "linear", "H", "copper"}
+    );
+    expectPlasticityError
+    (
+        "type vonMises; yieldStress { type linear; H 1e8; } tau 0;",
+        {"yieldStress", "linear", "sigmaY0", "copper"}
+    );
+    expectPlasticityError
+    (
+        "type vonMises; yieldStress { type linear; sigmaY0 0; H 1e8; } tau 0;",
+        {"yieldStress", "sigmaY0 = 0", "positive", "copper"}
+    );
+    expectPlasticityError
+    (
+        "type vonMises; yieldStress { type linear; sigmaY0 4e8; H -1e8; }"
+        " tau 0;",
+        {"yieldStress", "H = -1e+08", "non-negative", "copper"}
+    );
+
+    // Not a sub-dictionary
+    expectPlasticityError
+    (
+        "type vonMises; yieldStress 4e8; tau 0;",
+        {"yieldStress", "sub-dictionary", "copper"}
+    );
+
+    // The flow stress given twice
+    for (const std::string entry : {"sigmaY 4e8;", "sigmaY0 4e8;", "H 1e8;"})
+    {
+        expectPlasticityError
+        (
+            "type vonMises; yieldStress { type constant; sigmaY 4e8; } "
+          + entry + " tau 0;",
+            {"yieldStress", entry.substr(0, entry.find(' ')), "copper"}
+        );
+    }
+
+    // The relaxation rate stays an entry of vonMises
+    expectPlasticityError
+    (
+        "type vonMises; yieldStress { type constant; sigmaY 4e8; }",
+        {"tau"}
+    );
+    expectPlasticityError
+    (
+        "type vonMises; yieldStress { type constant; sigmaY 4e8; } tau -1;",
+        {"tau", "copper"}
+    );
+
+    // Neither the original entries nor the sub-dictionary: the message
+    // points at both
+    expectPlasticityError
+    (
+        "type vonMises; tau 0;", {"sigmaY", "sigmaY0", "yieldStress", "copper"}
     );
 }

@@ -160,7 +160,7 @@ TEST(vonMises, idealReturnLandsOnYieldSurface)
         auto elastic = elasticModel::New(m.name, dictFrom(m.elasticity));
         auto plastic = plasticFrom(m, vonMisesText(m.sigmaY, 0));
         EXPECT_TRUE(plastic->plastic());
-        EXPECT_EQ(plastic->sigmaY(0.7), m.sigmaY);
+        EXPECT_EQ(plastic->sigmaY(0.7, 0, 0), m.sigmaY);
 
         int nYield = 0, nElastic = 0;
         for (int sample = 0; sample < 2000; ++sample)
@@ -172,7 +172,7 @@ TEST(vonMises, idealReturnLandsOnYieldSurface)
             const scalar f0 = vonMisesStress(*elastic, A0);
             const scalar e0 = elastic->energy(cobasis::g(A0));
 
-            const scalar heat = plastic->correct(A, epsP, *elastic, 0);
+            const scalar heat = plastic->correct(A, epsP, *elastic, 0, 0);
 
             if (f0 <= m.sigmaY)
             {
@@ -229,7 +229,7 @@ TEST(vonMises, idealReturnLandsOnYieldSurface)
             // A second call changes nothing (already on the surface)
             matrix A2(A);
             scalar epsP2 = epsP;
-            const scalar heat2 = plastic->correct(A2, epsP2, *elastic, 0);
+            const scalar heat2 = plastic->correct(A2, epsP2, *elastic, 0, 0);
             EXPECT_LE(maxAbs(A2 - A), 1e-12*maxAbs(A));
             // heat2 is e_e(A) - e_e(A2): round-off of the energy, whose
             // terms are of order mu/rho0 (a difference of O(1) invariants)
@@ -264,21 +264,21 @@ TEST(vonMises, linearHardening)
             << "; H " << m.H << "; tau 0;";
         auto plastic = plasticFrom(m, os.str());
         auto ideal = plasticFrom(m, vonMisesText(m.sigmaY, 0));
-        EXPECT_EQ(plastic->sigmaY(0.5), m.sigmaY + 0.5*m.H);
+        EXPECT_EQ(plastic->sigmaY(0.5, 0, 0), m.sigmaY + 0.5*m.H);
 
         int nYield = 0;
         for (int sample = 0; sample < 500; ++sample)
         {
             const matrix A0(randomState(gen));
             const scalar epsP0 = 0.2*(sample % 4);
-            if (vonMisesStress(*elastic, A0) <= plastic->sigmaY(epsP0))
+            if (vonMisesStress(*elastic, A0) <= plastic->sigmaY(epsP0, 0, 0))
             {
                 continue;
             }
             ++nYield;
             matrix A(A0);
             scalar epsP = epsP0;
-            plastic->correct(A, epsP, *elastic, 0);
+            plastic->correct(A, epsP, *elastic, 0, 0);
 
             EXPECT_GT(epsP, epsP0);
             const scalar err =
@@ -293,7 +293,7 @@ TEST(vonMises, linearHardening)
             {
                 matrix Ai(A0);
                 scalar epsPi = 0;
-                ideal->correct(Ai, epsPi, *elastic, 0);
+                ideal->correct(Ai, epsPi, *elastic, 0, 0);
                 EXPECT_GT(vonMisesStress(*elastic, A), m.sigmaY);
                 EXPECT_LT(epsP, epsPi);
             }
@@ -334,7 +334,7 @@ TEST(vonMises, viscoPlasticRelaxation)
 
             matrix Ai(A0);
             scalar epsPi = 0;
-            ideal->correct(Ai, epsPi, *elastic, 0);
+            ideal->correct(Ai, epsPi, *elastic, 0, 0);
             const scalar sY = returnFraction(A0, Ai);
 
             scalar fPrev = f0, sPrev = 1, epsPPrev = 0;
@@ -343,7 +343,7 @@ TEST(vonMises, viscoPlasticRelaxation)
                 matrix A(A0);
                 scalar epsP = 0;
                 const scalar e0 = elastic->energy(cobasis::g(A0));
-                const scalar heat = visco->correct(A, epsP, *elastic, r*tau);
+                const scalar heat = visco->correct(A, epsP, *elastic, r*tau, 0);
                 const scalar f = vonMisesStress(*elastic, A);
                 const scalar s = returnFraction(A0, A);
 
@@ -385,7 +385,7 @@ TEST(vonMises, viscoPlasticRelaxation)
             {
                 matrix A(A0);
                 scalar epsP = 0;
-                visco->correct(A, epsP, *elastic, 0);
+                visco->correct(A, epsP, *elastic, 0, 0);
                 EXPECT_LE(maxAbs(A - A0), 1e-12*maxAbs(A0)) << m.name;
                 EXPECT_LE(epsP, 1e-12) << m.name;
             }
@@ -428,14 +428,14 @@ TEST(vonMises, viscoPlasticExponent)
 
             matrix Ai(A0);
             scalar epsPi = 0;
-            ideal->correct(Ai, epsPi, *elastic, 0);
+            ideal->correct(Ai, epsPi, *elastic, 0, 0);
             const scalar sY = returnFraction(A0, Ai);
 
             for (const scalar r : {1e-3, 0.1, 10.0})
             {
                 matrix A(A0);
                 scalar epsP = 0;
-                visco->correct(A, epsP, *elastic, r*tau);
+                visco->correct(A, epsP, *elastic, r*tau, 0);
                 const scalar s = returnFraction(A0, A);
                 const scalar f = vonMisesStress(*elastic, A) - m.sigmaY;
                 EXPECT_GE(f, -1e-10*m.sigmaY);
@@ -471,7 +471,7 @@ TEST(vonMises, noneLeavesCobasisUnchanged)
             const matrix A0(randomCobasis(gen, 3));
             matrix A(A0);
             scalar epsP = 0.25;
-            EXPECT_EQ(none->correct(A, epsP, *elastic, 1e-6), 0);
+            EXPECT_EQ(none->correct(A, epsP, *elastic, 1e-6, 0), 0);
             EXPECT_TRUE((A.array() == A0.array()).all());
             EXPECT_EQ(epsP, 0.25);
         }

@@ -512,10 +512,18 @@ bool Foam::mechanicalRelaxation::relaxPlastic
         }
         if (ph.solid() && !trace_[k])
         {
-            const scalar heat = phase.plastic().correct
+            // The temperature before the step, for a flow stress that
+            // depends on it (the phase model made sure the equation of
+            // state has one)
+            const plasticModel& plastic = phase.plastic();
+            const scalar T =
+                plastic.needsTemperature()
+              ? ph.eos().T(1/v0_[k], eh0_[k])
+              : 0;
+            const scalar heat = plastic.correct
             (
                 q.A[k][c], phase.carried(phase.epsilonPIndex())[c],
-                ph.elastic(), dt
+                ph.elastic(), dt, T
             );
             eh0_[k] += heat;
             phase.carried(phase.plasticWorkIndex())[c] += heat;

@@ -1,0 +1,33 @@
+#include "yieldStress.H"
+
+Foam::autoPtr<Foam::yieldStress> Foam::yieldStress::New
+(
+    const word& phaseName,
+    const dictionary& dict
+)
+{
+    if (!dict.found("type"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Phase " << phaseName << ": yieldStress needs the entry type"
+            << nl << nl << "Valid types are :" << nl
+            << dictionaryConstructorTablePtr_->sortedToc()
+            << exit(FatalIOError);
+    }
+
+    const word modelType(dict.get<word>("type"));
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown yieldStress type " << modelType
+            << " for phase " << phaseName << nl << nl
+            << "Valid types are :" << nl
+            << dictionaryConstructorTablePtr_->sortedToc()
+            << exit(FatalIOError);
+    }
+
+    return cstrIter()(phaseName, dict);
+}
