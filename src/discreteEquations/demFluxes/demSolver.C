@@ -328,7 +328,7 @@ void Foam::demSolver::centreSides
         const hyperelasticPhase& ph = phases_.phase(k);
         if
         (
-            rho > 0 && p > ph.eos().pMin()
+            rho > 0 && p > ph.eos().pMin(rho)
          && (!ph.solid() || A.determinant() > 0)
         )
         {
@@ -446,7 +446,7 @@ void Foam::demSolver::faceSides
 
         if
         (
-            !(sk.rho > 0) || !(sk.p > ph.eos().pMin())
+            !(sk.rho > 0) || !(sk.p > ph.eos().pMin(sk.rho))
          || (ph.solid() && !(sk.A.determinant() > 0))
         )
         {

@@ -318,17 +318,18 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
         if (phaseDict.found("cavitationPressure"))
         {
             pCavitation_[k] = phaseDict.get<scalar>("cavitationPressure");
+            // Held there, the fluid may expand to a vanishing density
             if
             (
                 !isentropicRelaxation_[k]
-             || !(pCavitation_[k] > phases_[k].eos().pMin())
+             || !(pCavitation_[k] > phases_[k].eos().pMin(SMALL))
             )
             {
                 FatalIOErrorInFunction(phaseDict)
                     << "Phase " << name << ": cavitationPressure "
                     << pCavitation_[k] << " needs pressureRelaxation"
                     << " isentropic and a value above "
-                    << phases_[k].eos().pMin() << exit(FatalIOError);
+                    << phases_[k].eos().pMin(SMALL) << exit(FatalIOError);
             }
         }
         if (phaseDict.found("referenceIsentrope"))
@@ -340,13 +341,13 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
             if
             (
                 !isentropicRelaxation_[k] || !(ref.first() > 0)
-             || !(ref.second() > phases_[k].eos().pMin())
+             || !(ref.second() > phases_[k].eos().pMin(ref.first()))
             )
             {
                 FatalIOErrorInFunction(phaseDict)
                     << "Phase " << name << ": referenceIsentrope " << ref
                     << " needs pressureRelaxation isentropic, rho > 0 and"
-                    << " p > " << phases_[k].eos().pMin()
+                    << " p > " << phases_[k].eos().pMin(ref.first())
                     << exit(FatalIOError);
             }
             isentrope_[k] = Pair<scalar>
@@ -509,12 +510,12 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
         const scalarField& pk = p_[k].primitiveField();
         forAll(rho, celli)
         {
-            if (!(rho[celli] > 0) || !(pk[celli] > eos.pMin()))
+            if (!(rho[celli] > 0) || !(pk[celli] > eos.pMin(rho[celli])))
             {
                 FatalErrorInFunction
                     << "Phase " << name << " starts in cell " << celli
                     << " with rho = " << rho[celli] << ", p = " << pk[celli]
-                    << ": need rho > 0 and p > " << eos.pMin()
+                    << ": need rho > 0 and p > " << eos.pMin(rho[celli])
                     << exit(FatalError);
             }
         }

@@ -70,12 +70,12 @@ bool Foam::mechanicalRelaxation::interfacePressure
         if (trace_[k]) continue;
         const equationOfState& eos = phases_.phase(k).eos();
         const scalar pk = eos.p(1/v0_[k], eh0_[k]);
-        if (!(isentropic_[k] && phases_.cavitationPressure(k) > eos.pMin()))
+        if (!(isentropic_[k] && phases_.cavitationPressure(k) > eos.pMin(1/v0_[k])))
         {
             // v_k(p) grows without bound as p -> pMin
-            lo = max(lo, eos.pMin());
+            lo = max(lo, eos.pMin(1/v0_[k]));
         }
-        pScale = max(pScale, eos.pScale(pk));
+        pScale = max(pScale, eos.pScale(1/v0_[k], pk));
         pGuess += alpha_[k]*pk;
         wGuess += alpha_[k];
     }
@@ -146,7 +146,8 @@ bool Foam::mechanicalRelaxation::vacuumFloor(const label k)
         }
     }
     const equationOfState& eos = phases_.phase(k).eos();
-    const scalar eFloor = eos.e(1/v0_[k], eos.pMin() + phases_.pVacuum());
+    const scalar eFloor =
+        eos.e(1/v0_[k], eos.pMin(1/v0_[k]) + phases_.pVacuum());
     if (payer >= 0)
     {
         eh0_[payer] -= m_[k]*(eFloor - eh0_[k])/m_[payer];
@@ -381,7 +382,7 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
             if (trace_[k]) continue;
             const equationOfState& eos = phases_.phase(k).eos();
             const scalar pk = eos.p(1/v0_[k], eh0_[k]);
-            if (!(pk > eos.pMin()))
+            if (!(pk > eos.pMin(1/v0_[k])))
             {
                 if
                 (
@@ -437,7 +438,7 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
             if (!trace_[k]) continue;
             const hyperelasticPhase& ph = phases_.phase(k);
             const scalar rho = 1/v0_[k];
-            scalar pk = max(pStar, ph.eos().pMin() + 1);
+            scalar pk = max(pStar, ph.eos().pMin(rho) + 1);
             const scalar eeOld = ph.elasticEnergy(q.A[k][c]);
             if (ph.solid())
             {
@@ -500,7 +501,7 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
             (
                 phases_.pVacuum() >= 0 && !trace_[k]
              && !phases_.phase(k).solid()
-             && !(eos.p(1/v0_[k], eh0_[k]) > eos.pMin())
+             && !(eos.p(1/v0_[k], eh0_[k]) > eos.pMin(1/v0_[k]))
             )
             {
                 vacuumFloor(k);
@@ -520,7 +521,7 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
             if (!trace_[k])
             {
                 if (!(rho > 0)) fail(c, k, "rho", rho);
-                if (!(p > ph.eos().pMin())) fail(c, k, "p", p);
+                if (!(p > ph.eos().pMin(rho))) fail(c, k, "p", p);
                 if (!(alpha_[k] <= 1)) fail(c, k, "alpha", alpha_[k]);
                 if (ph.solid() && !(A.determinant() > 0))
                 {
