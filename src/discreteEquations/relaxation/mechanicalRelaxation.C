@@ -60,8 +60,9 @@ bool Foam::mechanicalRelaxation::interfacePressure
 ) const
 {
     // F(p) = sum m_k v_k(p) - volume decreases from +inf at the largest
-    // pMin (every active phase is admissible there) to
-    // sum alpha_k (gamma-1)/gamma - volume < 0: one root
+    // of the lowest pressures the phases' paths reach (every active phase
+    // is admissible there) to sum alpha_k (gamma-1)/gamma - volume < 0
+    // (stiffened gases): one root
     scalar lo = -GREAT;
     scalar pScale = 0;
     scalar pGuess = 0, wGuess = 0;
@@ -70,10 +71,15 @@ bool Foam::mechanicalRelaxation::interfacePressure
         if (trace_[k]) continue;
         const equationOfState& eos = phases_.phase(k).eos();
         const scalar pk = eos.p(1/v0_[k], eh0_[k]);
-        if (!(isentropic_[k] && phases_.cavitationPressure(k) > eos.pMin(1/v0_[k])))
+        const Pair<scalar> s0(isentropeStart(k));
+        const scalar pPath =
+            isentropic_[k]
+          ? eos.pIsentropicMin(s0.first(), s0.second())
+          : eos.pRelaxedMin(1/v0_[k], eh0_[k]);
+        if (!(isentropic_[k] && phases_.cavitationPressure(k) > pPath))
         {
-            // v_k(p) grows without bound as p -> pMin
-            lo = max(lo, eos.pMin(1/v0_[k]));
+            // v_k(p) grows without bound as p -> pPath
+            lo = max(lo, pPath);
         }
         pScale = max(pScale, eos.pScale(1/v0_[k], pk));
         pGuess += alpha_[k]*pk;
