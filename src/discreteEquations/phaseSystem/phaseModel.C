@@ -29,13 +29,14 @@ void Foam::phaseModel::readRelaxationPath(const dictionary& dict)
     if (dict.found("cavitationPressure"))
     {
         pCavitation_ = dict.get<scalar>("cavitationPressure");
-        if (!isentropicRelaxation_ || !(pCavitation_ > eos.pMin()))
+        // Held there, the fluid may expand to a vanishing density
+        if (!isentropicRelaxation_ || !(pCavitation_ > eos.pMin(SMALL)))
         {
             FatalIOErrorInFunction(dict)
                 << "Phase " << name << ": cavitationPressure "
                 << pCavitation_ << " needs pressureRelaxation"
                 << " isentropic and a value above "
-                << eos.pMin() << exit(FatalIOError);
+                << eos.pMin(SMALL) << exit(FatalIOError);
         }
     }
     if (dict.found("referenceIsentrope"))
@@ -44,13 +45,13 @@ void Foam::phaseModel::readRelaxationPath(const dictionary& dict)
         if
         (
             !isentropicRelaxation_ || !(ref.first() > 0)
-         || !(ref.second() > eos.pMin())
+         || !(ref.second() > eos.pMin(ref.first()))
         )
         {
             FatalIOErrorInFunction(dict)
                 << "Phase " << name << ": referenceIsentrope " << ref
                 << " needs pressureRelaxation isentropic, rho > 0 and"
-                << " p > " << eos.pMin() << exit(FatalIOError);
+                << " p > " << eos.pMin(ref.first()) << exit(FatalIOError);
         }
         isentrope_ =
             Pair<scalar>(ref.first(), eos.e(ref.first(), ref.second()));
@@ -96,12 +97,12 @@ void Foam::phaseModel::checkInitialState() const
     const scalarField& pk = p_->primitiveField();
     forAll(rho, celli)
     {
-        if (!(rho[celli] > 0) || !(pk[celli] > eos.pMin()))
+        if (!(rho[celli] > 0) || !(pk[celli] > eos.pMin(rho[celli])))
         {
             FatalErrorInFunction
                 << "Phase " << name() << " starts in cell " << celli
                 << " with rho = " << rho[celli] << ", p = " << pk[celli]
-                << ": need rho > 0 and p > " << eos.pMin()
+                << ": need rho > 0 and p > " << eos.pMin(rho[celli])
                 << exit(FatalError);
         }
     }
@@ -167,6 +168,14 @@ Foam::phaseModel::phaseModel
         dictionary noneDict;
         noneDict.add("type", "none");
         plastic_ = plasticModel::New(name, noneDict);
+    }
+    if (plastic_->needsTemperature() && !law_.eos().hasTemperature())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Phase " << name << ": its plasticity needs a temperature,"
+            << " and its equationOfState " << law_.eos().type()
+            << " gives none: add Cv to equationOfState"
+            << exit(FatalIOError);
     }
 
     IOobject pIO

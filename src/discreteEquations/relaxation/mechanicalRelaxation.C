@@ -63,8 +63,9 @@ bool Foam::mechanicalRelaxation::interfacePressure
 ) const
 {
     // F(p) = sum m_k v_k(p) - volume decreases from +inf at the largest
-    // pMin (every active phase is admissible there) to
-    // sum alpha_k (gamma-1)/gamma - volume < 0: one root
+    // of the lowest pressures the phases' paths reach (every active phase
+    // is admissible there) to sum alpha_k (gamma-1)/gamma - volume < 0
+    // (stiffened gases): one root
     scalar lo = -GREAT;
     scalar pScale = 0;
     scalar pGuess = 0, wGuess = 0;
@@ -73,12 +74,17 @@ bool Foam::mechanicalRelaxation::interfacePressure
         if (trace_[k]) continue;
         const equationOfState& eos = phases_.phase(k).eos();
         const scalar pk = eos.p(1/v0_[k], eh0_[k]);
-        if (!(isentropic_[k] && phases_.cavitationPressure(k) > eos.pMin()))
+        const Pair<scalar> s0(isentropeStart(k));
+        const scalar pPath =
+            isentropic_[k]
+          ? eos.pIsentropicMin(s0.first(), s0.second())
+          : eos.pRelaxedMin(1/v0_[k], eh0_[k]);
+        if (!(isentropic_[k] && phases_.cavitationPressure(k) > pPath))
         {
-            // v_k(p) grows without bound as p -> pMin
-            lo = max(lo, eos.pMin());
+            // v_k(p) grows without bound as p -> pPath
+            lo = max(lo, pPath);
         }
-        pScale = max(pScale, eos.pScale(pk));
+        pScale = max(pScale, eos.pScale(1/v0_[k], pk));
         pGuess += alpha_[k]*pk;
         wGuess += alpha_[k];
     }
@@ -149,7 +155,8 @@ bool Foam::mechanicalRelaxation::vacuumFloor(const label k)
         }
     }
     const equationOfState& eos = phases_.phase(k).eos();
-    const scalar eFloor = eos.e(1/v0_[k], eos.pMin() + phases_.pVacuum());
+    const scalar eFloor =
+        eos.e(1/v0_[k], eos.pMin(1/v0_[k]) + phases_.pVacuum());
     if (payer >= 0)
     {
         eh0_[payer] -= m_[k]*(eFloor - eh0_[k])/m_[payer];
@@ -403,7 +410,7 @@ void Foam::mechanicalRelaxation::screenEnergies
         if (trace_[k]) continue;
         const equationOfState& eos = phases_.phase(k).eos();
         const scalar pk = eos.p(1/v0_[k], eh0_[k]);
-        if (!(pk > eos.pMin()))
+        if (!(pk > eos.pMin(1/v0_[k])))
         {
             if
             (
@@ -473,7 +480,7 @@ void Foam::mechanicalRelaxation::relaxTraces
         if (!trace_[k]) continue;
         const hyperelasticPhase& ph = phases_.phase(k);
         const scalar rho = 1/v0_[k];
-        scalar pk = max(pStar, ph.eos().pMin() + 1);
+        scalar pk = max(pStar, ph.eos().pMin(rho) + 1);
         const scalar eeOld = ph.elasticEnergy(q.A[k][c]);
         if (ph.solid())
         {
@@ -543,7 +550,7 @@ void Foam::mechanicalRelaxation::vacuumAfterRelaxation()
         (
             phases_.pVacuum() >= 0 && !trace_[k]
          && !phases_.phase(k).solid()
-         && !(eos.p(1/v0_[k], eh0_[k]) > eos.pMin())
+         && !(eos.p(1/v0_[k], eh0_[k]) > eos.pMin(1/v0_[k]))
         )
         {
             vacuumFloor(k);
@@ -571,7 +578,7 @@ void Foam::mechanicalRelaxation::checkAndStore
         if (!trace_[k])
         {
             if (!(rho > 0)) fail(c, k, "rho", rho);
-            if (!(p > ph.eos().pMin())) fail(c, k, "p", p);
+            if (!(p > ph.eos().pMin(rho))) fail(c, k, "p", p);
             if (!(alpha_[k] <= 1)) fail(c, k, "alpha", alpha_[k]);
             if (ph.solid() && !(A.determinant() > 0))
             {

@@ -18,7 +18,8 @@ Foam::equationsOfState::stiffenedGas::stiffenedGas
 :
     equationOfState(phaseName, dict),
     gamma_(dict.get<scalar>("gamma")),
-    pInf_(dict.get<scalar>("pInf"))
+    pInf_(dict.get<scalar>("pInf")),
+    Cv_(0)
 {
     if (!(gamma_ > 1))
     {
@@ -32,4 +33,51 @@ Foam::equationsOfState::stiffenedGas::stiffenedGas
             << "Phase " << phaseName << ": equationOfState pInf = " << pInf_
             << " must be non-negative" << exit(FatalIOError);
     }
+    if (dict.found("Cv"))
+    {
+        Cv_ = dict.get<scalar>("Cv");
+        if (!(Cv_ > 0))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Phase " << phaseName << ": equationOfState Cv = " << Cv_
+                << " must be positive" << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::equationsOfState::stiffenedGas::noTemperature
+(
+    const char* function
+) const
+{
+    FatalErrorInFunction
+        << "Phase " << phaseName_ << " has no temperature (" << function
+        << " asked): the keyword Cv (heat capacity at constant volume,"
+        << " J/(kg K)) is missing from its equationOfState"
+        << exit(FatalError);
+}
+
+
+Foam::scalar Foam::equationsOfState::stiffenedGas::T
+(
+    const scalar rho,
+    const scalar e
+) const
+{
+    if (!(Cv_ > 0))
+    {
+        noTemperature("T");
+    }
+    return (p(rho, e) + pInf_)/((gamma_ - 1)*rho*Cv_);
+}
+
+
+Foam::scalar Foam::equationsOfState::stiffenedGas::Cv() const
+{
+    if (!(Cv_ > 0))
+    {
+        noTemperature("Cv");
+    }
+    return Cv_;
 }
