@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""V10 (VALIDATION.md): rigid rotation of a copper square; the cobasis
-velocity gradient of a frozen linear velocity field (NUMERICS.md 4).
+"""V10 (docs/validation.md): rigid rotation of a copper square; the cobasis
+velocity gradient of a frozen linear velocity field (docs/numerics.md 4).
 
 Case: tutorials/impactFoam/rigidRotation. Copper (rho0 8900, SG 4.22 /
 3.42e10 Pa, mu 4.5e10 Pa, a = 1/2, Von Mises sigmaY 4e8 Pa, tau 0), one
@@ -80,7 +80,7 @@ OMEGA = 1000.0
 ANGLE = 0.25
 T_END = ANGLE / OMEGA
 MU = 4.5e10
-SIGMA_TOL = 5e5               # VALIDATION.md V10 (1e-5 mu is 4.5e5 Pa here)
+SIGMA_TOL = 5e5               # docs/validation.md V10 (1e-5 mu is 4.5e5 Pa here)
 L_TOL = 1e-12
 L0 = OMEGA * np.array([[0.10, -0.85, 0.0],
                        [1.0, -0.05, 0.0],

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""V1 (VALIDATION.md): Abgrall's interface-advection test, copper in air.
+"""V1 (docs/validation.md): Abgrall's interface-advection test, copper in air.
 
 A copper slab (1-D), disc (2-D, radius 0.2 m) or sphere (3-D, radius
 0.25 m) in air, everything at u0 = 100 m/s and p0 = 1e5 Pa, transmissive
@@ -24,7 +24,7 @@ trace 1e-8 instead; second-order variants '1D_compressed' and
 'triangles_diag_compressed' steepen the volume fraction slopes
 (discreteEquations/alphaCompression 2). Every run takes exactly 500 steps of size maxDeltaT =
 0.9 maxCo times the stable step of copper at rest on that mesh
-(NUMERICS.md 6, bound |u.n| + a <= |u0| + 4791 m/s), endTime = 500
+(docs/numerics.md 6, bound |u.n| + a <= |u0| + 4791 m/s), endTime = 500
 maxDeltaT.
 
 Checks per run (VALIDATION V1):

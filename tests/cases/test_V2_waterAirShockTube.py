@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""V2 (VALIDATION.md): water-air shock tube against the exact stiffened-gas
+"""V2 (docs/validation.md): water-air shock tube against the exact stiffened-gas
 Riemann solution.
 
 [0, 1] m, interface at 0.7, water (rho 1000, p 1e9, SG 4.4 / 6e8) left, air

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""V3 (VALIDATION.md): Favrie's neo-Hookean aluminium Riemann problems
+"""V3 (docs/validation.md): Favrie's neo-Hookean aluminium Riemann problems
 against the reference solutions of tests/cases/data/favrie-neohookean
 (a copy of the project's shared data set; see its README.md).
 

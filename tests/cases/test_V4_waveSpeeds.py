@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""V4 (VALIDATION.md): speeds of small longitudinal and shear pulses in
-copper against the model's acoustic speeds at rest (MODEL.md):
+"""V4 (docs/validation.md): speeds of small longitudinal and shear pulses in
+copper against the model's acoustic speeds at rest (docs/model.md):
 
     c_L = sqrt(c_h^2 + 4 mu / (3 rho0)),  c_h^2 = gamma (p + pInf) / rho0
     c_T = sqrt(mu / rho0)

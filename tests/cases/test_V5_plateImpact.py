@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""V5 (VALIDATION.md): symmetric copper plate impact, 1-D, 2 x 200 m/s,
+"""V5 (docs/validation.md): symmetric copper plate impact, 1-D, 2 x 200 m/s,
 ideal Von Mises plasticity with sigma_Y = 0.3 GPa.
 
 The tutorial copperPlateImpact is run unchanged (./Allrun): one copper
@@ -10,7 +10,7 @@ impact plane an elastic precursor and, behind it, a plastic shock run into
 each plate; the central region is at rest.
 
 References
-- Precursor (VALIDATION.md): sigma_xx = -(K + 4 mu/3) sigma_Y / (2 mu),
+- Precursor (docs/validation.md): sigma_xx = -(K + 4 mu/3) sigma_Y / (2 mu),
   K = gamma (p0 + pInf). Printed as well: the exact precursor of the model
   (elastic uniaxial compression up to the yield surface, on the Hugoniot
   of the initial state), from tests/lib/elasticPlasticHugoniot.py.
@@ -45,7 +45,7 @@ plateau, |u| <= 0.5 % of the impact speed there; front positions within
 
 Two runs, the same checks: the tutorial as shipped (V5_*: the default
 numerics, second order) and the tutorial with discreteEquations order 1
-(V5_order1_*, the scheme of the prototype the VALIDATION.md numbers come
+(V5_order1_*, the scheme of the prototype the docs/validation.md numbers come
 from). Figures: tests/run/V5_copperPlateImpact*/plateImpact*.png.
 """
 import os

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""V6 (VALIDATION.md): conservation in a closed box, and serial = parallel.
+"""V6 (docs/validation.md): conservation in a closed box, and serial = parallel.
 
 tutorials/impactFoam/closedBox: a 2-D box [0, 1]^2 m (40 x 40 cells, slip
 walls, empty front and back) with a copper disc and an aluminium block that
@@ -20,7 +20,7 @@ Checks (VALIDATION V6), from the fields at t = 0 and at the end:
     sum(1/2 rho |U|^2 V), conserved to 1e-12 relative, with
     e_h = (p_k + gamma pInf)/((gamma - 1) rho_k) and
     e_e = mu/(4 rho0) ((1 - 2a)/3 j1^2 + a j2 + 3(a - 1)) of the unimodular
-    Finger tensor g of A_k (MODEL.md);
+    Finger tensor g of A_k (docs/model.md);
   - z-momentum sum(rho U_z V): no wall is normal to z, so it is conserved
     exactly; change <= 1e-12 of sum(rho |U| V). The x and y momenta change
     by the wall forces (printed);

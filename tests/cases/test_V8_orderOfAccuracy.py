@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""V8 (VALIDATION.md): observed order of accuracy on smooth elastic waves.
+"""V8 (docs/validation.md): observed order of accuracy on smooth elastic waves.
 
 Case: tutorials/impactFoam/smoothWave. Copper (rho0 8900, SG 4.22 /
 3.42e10 Pa, mu 4.5e10 Pa, a = 1/2, elastic), 1-D on [0, 1] m, transmissive

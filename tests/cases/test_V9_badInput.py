@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""V9 (VALIDATION.md, NUMERICS.md 8): bad input and unphysical runs.
+"""V9 (docs/validation.md, docs/numerics.md 8): bad input and unphysical runs.
 
 Base case: tests/cases/badInput/copperAir, a valid 1-D case (50 cells,
 3 steps): a copper slab (solid, separable a = 1/2, mu 4.5e10, Von Mises

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Elastic jelly ball on a rigid wall (VALIDATION.md W3), coarse setting.
+"""Elastic jelly ball on a rigid wall (docs/validation.md W3), coarse setting.
 
 tutorials/impactFoam/clayImpact as it is (./Allrun: elastic jelly ball,
 R = 10 mm, 2 m/s, neo-Hookean mu = 1 MPa, 0.5 mm above a rigid frictionless

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Coarse settings of the copper impact tutorials (issue 4, VALIDATION.md
+"""Coarse settings of the copper impact tutorials (issue 4, docs/validation.md
 W1/W2): what a coarse run can decide.
 
 Runs (0.4 mm cells, 20 us of the 80 us, fields every 2 us):

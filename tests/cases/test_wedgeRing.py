@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Axisymmetric wedge (NUMERICS.md 7): the uniformly expanding ring and a
+"""Axisymmetric wedge (docs/numerics.md 7): the uniformly expanding ring and a
 hydrostatic state at rest.
 
 Meshes (blockMesh, written by this script into tests/run/): one cell thick
@@ -26,7 +26,7 @@ least-squares gradients.
      wedge<angle>_radial   max |L_yy/k - 1|
      wedge<angle>_L        max |L - k diag(0,1,1)| / k over all cells
    Tolerance 1e-6 relative to k. Why that number: u = k (0, y, z) is a linear
-   Cartesian field, and NUMERICS.md 4 requires the face velocities to be
+   Cartesian field, and docs/numerics.md 4 requires the face velocities to be
    reconstructed exactly for linear fields; with exact face-centroid
    velocities the Green-Gauss identity sum_f x_f (x) S_f = V I (planar
    faces) makes L exact up to round-off (about 1e-16 r/(r sin(THETA/2))
@@ -35,7 +35,7 @@ least-squares gradients.
    error e in L accumulates a spurious strain e times the flow's strain,
    O(1) in an impact, i.e. a spurious deviatoric stress ~ e mu; 1e-6 keeps
    it ten times below V10's 1e-5 mu. Geometric errors of the wedge
-   treatment (the mirrored or fully rotated ghost of NUMERICS.md 7, O(THETA^2)
+   treatment (the mirrored or fully rotated ghost of docs/numerics.md 7, O(THETA^2)
    ~ 1e-4 to 1e-3; cell-centre velocities on the faces, O(dr/r); a gradient
    not exact on wedges) are all caught. The disc mesh is reported as a note
    (its axis cells have degenerate faces).

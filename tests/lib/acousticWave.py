@@ -14,7 +14,7 @@ characteristic of linear elasticity about the rest state (rho0, p0, A = I):
                    -> sigma_xy = -rho0 c_T u_y
 
 with c_h^2 = gamma (p0 + pInf)/rho0, c_L^2 = c_h^2 + 4 mu/(3 rho0),
-c_T^2 = mu/rho0 (MODEL.md). The exact linear solution translates each
+c_T^2 = mu/rho0 (docs/model.md). The exact linear solution translates each
 pulse: u_x(x, t) = UL f(x - c_L t), u_y(x, t) = UT f(x - c_T t). The
 neglected nonlinear terms are of relative size u/c (2e-7 at 1e-3 m/s).
 
@@ -37,7 +37,7 @@ if HERE not in sys.path:
 import meshGeometry as mg        # noqa: E402
 import fieldWriter as fw         # noqa: E402
 
-# Copper of the tutorials (MODEL.md) at rest
+# Copper of the tutorials (docs/model.md) at rest
 COPPER = {"rho0": 8900.0, "gamma": 4.22, "pInf": 3.42e10, "mu": 4.5e10,
           "p0": 1e5}
 

@@ -1,5 +1,5 @@
 """Shock (Rankine-Hugoniot) states of the elastic-plastic model of
-MODEL.md in uniaxial strain: stiffened gas plus the separable shear energy
+docs/model.md in uniaxial strain: stiffened gas plus the separable shear energy
 e_e(g) = mu/(4 rho0) ((1 - 2a)/3 j1^2 + a j2 + 3(a - 1)), ideal Von Mises
 plasticity, no hardening. Standard library only.
 
@@ -53,7 +53,7 @@ class Material(object):
                                             + a * j2 + 3 * (a - 1))
 
     def S_xx(self, l, rho):
-        """Deviatoric stress S_xx of MODEL.md for g = diag(l, t, t)."""
+        """Deviatoric stress S_xx of docs/model.md for g = diag(l, t, t)."""
         j1, j2, t = self._invariants(l)
         a = self.a
         dg = l - j1 / 3.0                      # (g - j1/3 I)_xx

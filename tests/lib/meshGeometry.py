@@ -122,7 +122,7 @@ def read_polymesh(case, region=""):
 
 def stable_step(m, speed):
     """min over cells of 2 V / sum_f |S_f| speed over the faces that are
-    not on empty patches (NUMERICS.md section 6, without maxCo), for one
+    not on empty patches (docs/numerics.md section 6, without maxCo), for one
     bound 'speed' >= |u.n| + a valid in every cell."""
     ni = m.nInternalFaces
     lam = m.magSf * speed

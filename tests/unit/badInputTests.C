@@ -1,5 +1,5 @@
 /*---------------------------------------------------------------------------*\
-  Unit tests of bad material input (VALIDATION.md V9, library part): every
+  Unit tests of bad material input (docs/validation.md V9, library part): every
   invalid phase or plasticity dictionary stops with a FatalError (thrown as
   Foam::error here) whose message names the problem.
 \*---------------------------------------------------------------------------*/

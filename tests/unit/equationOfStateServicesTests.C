@@ -1,6 +1,6 @@
 /*---------------------------------------------------------------------------*\
-  Unit tests of the generic equation-of-state services (MATERIALS.md
-  section 1): the relaxation paths, isentropes and helpers that
+  Unit tests of the generic equation-of-state services (docs/model.md
+  section 10.1): the relaxation paths, isentropes and helpers that
   equationOfState builds on the primitives of any model, against the closed
   forms of the stiffened gas; the temperature of the stiffened gas.
 \*---------------------------------------------------------------------------*/

@@ -1,5 +1,5 @@
 /*---------------------------------------------------------------------------*\
-  Unit tests of hyperelasticPhase (VALIDATION.md V7): wave speeds at rest
+  Unit tests of hyperelasticPhase (docs/validation.md V7): wave speeds at rest
   (c_T^2 = mu/rho0, c_L^2 = c_h^2 + 4/3 mu/rho0), the acoustic tensor of a
   strained solid against isentropic finite differences of the Cauchy
   stress, energy/pressure round trip, and the fluid case.
@@ -19,7 +19,7 @@ using namespace unitTestTools;
 namespace
 {
 
-// Copper, stiffened-gas fit (MODEL.md)
+// Copper, stiffened-gas fit (docs/model.md)
 const scalar rho0Cu = 8900;
 const scalar gammaCu = 4.22;
 const scalar pInfCu = 3.42e10;

@@ -1,5 +1,5 @@
 /*---------------------------------------------------------------------------*\
-  Unit tests of the separable shear energies (VALIDATION.md V7):
+  Unit tests of the separable shear energies (docs/validation.md V7):
   stress = -2 rho G de/dG = rho (de/dF) F^T at large strains, small-shear
   modulus, stress-free rest and rigid rotations, frame indifference, named
   presets, and the acoustic tensor: symmetry, complex step against finite
@@ -420,7 +420,7 @@ TEST(separableElasticity, presetsEqualSeparable)
         }
     }
 
-    // The closed forms of MODEL.md for the presets
+    // The closed forms of docs/model.md for the presets
     auto neo = modelFrom("type neoHookean; " + props);
     auto metal = modelFrom("type metal; " + props);
     for (int sample = 0; sample < 20; ++sample)

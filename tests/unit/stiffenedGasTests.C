@@ -1,5 +1,5 @@
 /*---------------------------------------------------------------------------*\
-  Unit tests of the stiffened-gas equation of state (VALIDATION.md V7, V9)
+  Unit tests of the stiffened-gas equation of state (docs/validation.md V7, V9)
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 /*---------------------------------------------------------------------------*\
-  Unit tests of the plastic relaxation (VALIDATION.md V7): the Von Mises
+  Unit tests of the plastic relaxation (docs/validation.md V7): the Von Mises
   return lands on the yield surface, keeps det A (density), leaves the
   yielded A without rotation (A = G^(1/2), symmetric positive definite: the
   rotation carries no stress, and a rotation field that varies from cell to
@@ -123,7 +123,7 @@ TEST(vonMises, stressAndEnergyGrowAlongReturnPath)
 {
     // The return path g(s) = Q diag(l_i^s) Q^T, s in [0, 1], on which the
     // algorithm searches for the yield surface: |S| and e_e grow with s
-    // (MODEL.md), so the root is unique. Unimodular stretches up to 10.
+    // (docs/model.md), so the root is unique. Unimodular stretches up to 10.
     std::mt19937 gen(71);
     std::uniform_real_distribution<double> U(-std::log(10.0), std::log(10.0));
     for (const material& m : materials)

@@ -1,6 +1,6 @@
 /*---------------------------------------------------------------------------*\
   Unit tests of the flow stress laws sigma_Y(epsP, epsPDot, T) and of the
-  shared plastic return onto them (MATERIALS.md section 3): for every law
+  shared plastic return onto them (docs/model.md section 10.3): for every law
   (constant, linear and a rate- and temperature-dependent law defined here,
   registered in the yieldStress table like any user law) the return lands
   on sigma_Y(epsP + dEpsP, dEpsP/dt, T), keeps det A, never increases the

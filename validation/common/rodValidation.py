@@ -1,4 +1,4 @@
-"""Shared pieces of the copper rod validations (VALIDATION.md W1, W2, W4):
+"""Shared pieces of the copper rod validations (docs/validation.md W1, W2, W4):
 running a tutorial copy at a cell size, reading rodProfile's tables,
 reference numbers, Taylor's estimate, plots and the markdown report.
 
@@ -16,7 +16,7 @@ ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "tests", "lib"))
 import foamcase as fc  # noqa: E402
 
-# W1 (VALIDATION.md): the copper bar and its reference band
+# W1 (docs/validation.md): the copper bar and its reference band
 L0 = 32.4e-3          # m
 R0 = 3.2e-3           # m
 V0 = 227.0            # m/s

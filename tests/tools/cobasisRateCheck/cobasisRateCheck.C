@@ -5,7 +5,7 @@ Application
     cobasisRateCheck
 
 Description
-    Test tool (VALIDATION V10 and the wedge ring test of NUMERICS.md 7):
+    Test tool (VALIDATION V10 and the wedge ring test of docs/numerics.md 7):
     the velocity gradient L_ij = du_i/dx_j that the cobasis update of one
     hyperbolic step sees, compared with an expected tensor L0.
 
