@@ -119,9 +119,12 @@ def count_steps(log):
         return sum(1 for line in f if line.startswith("Time = "))
 
 
-def run_case(name, kind, u0, order):
+def run_case(name, kind, u0, order, riemann_solver=None):
     case = fc.copy_tutorial(TUTORIAL, "V1_" + name)
     fc.set_entry(case, "system/fvSchemes", "order", order)
+    if riemann_solver:
+        fc.set_entry(case, "system/fvSchemes",
+                     "discreteEquations/riemannSolver", riemann_solver)
     set_fields = make_mesh(case, kind)
     log = fc.run(case, ["checkMesh"])
     with open(log) as f:
