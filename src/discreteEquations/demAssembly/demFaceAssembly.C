@@ -38,6 +38,29 @@ Foam::demFaceAssembly::demFaceAssembly
 }
 
 
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::riemannState Foam::demFaceAssembly::faceFrameState
+(
+    const label k,
+    const phaseSide& s,
+    const cobasis::matrix& R,
+    const cobasis::vector& n
+) const
+{
+    riemannState K;
+    K.rho = s.rho;
+    K.v = R*s.U;
+    K.s = R*(s.sigma*n);
+    K.E = s.E;
+    K.a = s.a;
+    K.cT = s.cT;
+    K.G = phases_.phase(k).eos().fundamentalDerivative(s.rho, s.p);
+    K.solid = s.solid;
+    return K;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::demFaceAssembly::reset()
@@ -119,24 +142,8 @@ void Foam::demFaceAssembly::solveFace
                 return;
             }
 
-            riemannState L, Rs;
-            L.rho = sl.rho;
-            L.v = R*sl.U;
-            L.s = R*(sl.sigma*n);
-            L.E = sl.E;
-            L.a = sl.a;
-            L.cT = sl.cT;
-            L.G = phases_.phase(k).eos().fundamentalDerivative(sl.rho, sl.p);
-            L.solid = sl.solid;
-
-            Rs.rho = sr.rho;
-            Rs.v = R*sr.U;
-            Rs.s = R*(sr.sigma*n);
-            Rs.E = sr.E;
-            Rs.a = sr.a;
-            Rs.cT = sr.cT;
-            Rs.G = phases_.phase(j).eos().fundamentalDerivative(sr.rho, sr.p);
-            Rs.solid = sr.solid;
+            const riemannState L(faceFrameState(k, sl, R, n));
+            const riemannState Rs(faceFrameState(j, sr, R, n));
 
             const riemannSolution sol = riemann_->solve(L, Rs, k == j);
 
