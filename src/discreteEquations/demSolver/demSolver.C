@@ -295,7 +295,9 @@ void Foam::demSolver::newState(const scalar dt, conservedState& q) const
 
 void Foam::demSolver::prepare()
 {
-    phases_.correctBoundaryConditions();
+    // The phases' boundary values are current: the phase system corrects
+    // them after every change of the fields (construction, end of a step,
+    // restored state)
     cells_.update();
 }
 
