@@ -31,6 +31,9 @@ Description
 #include "mechanicalRelaxation.H"
 #include "bodyForces.H"
 #include "stepControl.H"
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 int main(int argc, char *argv[])
 {
@@ -46,6 +49,16 @@ int main(int argc, char *argv[])
         "time",
         "stop at this time instead of the controlDict's endTime"
     );
+
+    #ifdef __GLIBC__
+    // Keep the memory the step's temporary fields free inside the process:
+    // returned to the system (the default trims the heap top and maps large
+    // blocks anew), it is faulted in again at every step (single-phase gas,
+    // 40,000 cells: five times as many page faults, 1.6 times the run time)
+    mallopt(M_MMAP_THRESHOLD, 32*1024*1024);
+    mallopt(M_TRIM_THRESHOLD, 1024*1024*1024);
+    mallopt(M_TOP_PAD, 64*1024*1024);
+    #endif
 
     #include "setRootCase.H"
     #include "createTime.H"

@@ -314,7 +314,12 @@ void Foam::phaseSystem::correctMixture()
         }
     }
 
-    sigmaEq_.primitiveFieldRef() = sqrt(1.5)*mag(dev(sigma));
+    // Per cell, without temporary fields
+    scalarField& sigmaEq = sigmaEq_.primitiveFieldRef();
+    forAll(sigma, celli)
+    {
+        sigmaEq[celli] = sqrt(1.5)*mag(dev(sigma[celli]));
+    }
 
     rhoMixture_.correctBoundaryConditions();
     pMixture_.correctBoundaryConditions();
