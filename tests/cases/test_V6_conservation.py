@@ -204,9 +204,10 @@ def isentropic_air(case):
         f.write(text)
 
 
-def run_tutorial(name, order, parallel, isentropic=False):
+def run_tutorial(name, order, parallel, isentropic=False, before_run=None):
     """The steps of the tutorial's Allrun [-parallel], with the solver run
-    capped at twice the expected number of steps."""
+    capped at twice the expected number of steps; before_run(case), if
+    given, changes the case after its initial fields are set."""
     case = fc.copy_tutorial(TUTORIAL, name)
     fc.set_entry(case, "system/fvSchemes", "order", order)
     if isentropic:
@@ -220,6 +221,8 @@ def run_tutorial(name, order, parallel, isentropic=False):
     fc.run(case, ["setFields"])
     fc.run(case, [sys.executable, "randomVelocity.py", ".", "1"],
            log="log.randomVelocity")
+    if before_run:
+        before_run(case)
     if parallel:
         fc.run(case, ["decomposePar"])
         solverRun.run_capped(case, "mpirun --oversubscribe -np 2 "

@@ -25,7 +25,6 @@ Checks:
 """
 import os
 import re
-import shutil
 import sys
 
 import numpy as np
@@ -36,12 +35,11 @@ import foamcase as fc                         # noqa: E402
 from checks import Checks                     # noqa: E402
 import fieldWriter as fw                      # noqa: E402
 import meshGeometry as mg                     # noqa: E402
-import solverRun                              # noqa: E402
+sys.path.insert(0, HERE)
+import test_V6_conservation as v6             # noqa: E402
 
-TUTORIAL = "closedBox"
 DYE_PHASES = ("copper", "air")
 LO, HI = 0.2, 0.9
-RUN_TIMEOUT = 180
 
 checks = Checks()
 
@@ -59,36 +57,21 @@ def add_dye(case):
         f.write(text)
 
 
+def write_dye(case):
+    """passiveScalars (dye) in the dye phases, random initial dye fields"""
+    add_dye(case)
+    mesh = mg.read_polymesh(case)
+    rng = np.random.default_rng(7)
+    for phase in DYE_PHASES:
+        fw.write_field(case, "0", "dye." + phase,
+                       rng.uniform(LO, HI, mesh.nCells), mesh,
+                       dimensions="[0 0 0 0 0 0 0]")
+
+
 def run(name, dye, parallel):
-    case = fc.copy_tutorial(TUTORIAL, name)
-    fc.set_entry(case, "system/fvSchemes", "order", 2)
-    t_end = float(fc.get_entry(case, "system/controlDict", "endTime"))
-    max_dt = float(fc.get_entry(case, "system/controlDict", "maxDeltaT"))
-    max_steps = 2 * int(round(t_end / max_dt))
-    fc.run(case, ["blockMesh"])
-    shutil.rmtree(os.path.join(case, "0"), ignore_errors=True)
-    shutil.copytree(os.path.join(case, "0.orig"), os.path.join(case, "0"))
-    fc.run(case, ["setFields"])
-    fc.run(case, [sys.executable, "randomVelocity.py", ".", "1"],
-           log="log.randomVelocity")
-    if dye:
-        add_dye(case)
-        mesh = mg.read_polymesh(case)
-        rng = np.random.default_rng(7)
-        for phase in DYE_PHASES:
-            fw.write_field(case, "0", "dye." + phase,
-                           rng.uniform(LO, HI, mesh.nCells), mesh,
-                           dimensions="[0 0 0 0 0 0 0]")
-    if parallel:
-        fc.run(case, ["decomposePar"])
-        solverRun.run_capped(case, "mpirun --oversubscribe -np 2 "
-                             "impactFoam -parallel", max_steps,
-                             log="log.mpirun", timeout=RUN_TIMEOUT)
-        fc.run(case, ["reconstructPar"])
-    else:
-        solverRun.run_capped(case, "impactFoam", max_steps,
-                             timeout=RUN_TIMEOUT)
-    return case
+    """V6's closed box at second order (test_V6_conservation.run_tutorial)"""
+    return v6.run_tutorial(name, 2, parallel,
+                           before_run=write_dye if dye else None)
 
 
 def main():

@@ -71,25 +71,6 @@ scalar vonMisesStress(const elasticModel& elastic, const matrix& A)
 }
 
 
-//- Random cobasis with principal log-stretches m u_i, u_i in [-1, 1] and
-//  m log-uniform in [1e-3, ln 3]: from the elastic range of copper to
-//  large strains, with volume changes and random rotations
-matrix randomState(std::mt19937& gen)
-{
-    std::uniform_real_distribution<double> U(-1, 1);
-    std::uniform_real_distribution<double> logM
-    (
-        std::log(1e-3), std::log(std::log(3.0))
-    );
-    const scalar m = std::exp(logM(gen));
-    const vector l
-    (
-        std::exp(m*U(gen)), std::exp(m*U(gen)), std::exp(m*U(gen))
-    );
-    return randomRotation(gen)*l.asDiagonal()*randomRotation(gen).transpose();
-}
-
-
 //- The principal log-strains of g(Anew) in the principal frame of g(Aold):
 //  checks that the two are coaxial and returns s with ln g_new = s ln g_old
 scalar returnFraction(const matrix& Aold, const matrix& Anew)

@@ -143,24 +143,6 @@ scalar vonMisesStress(const elasticModel& elastic, const matrix& A)
     return std::sqrt(1.5)*elastic.SofA(A).norm();
 }
 
-//- Random cobasis with principal log-stretches m u_i, u_i in [-1, 1] and
-//  m log-uniform in [1e-3, ln 3]: elastic and yielding states, volume
-//  changes and random rotations
-matrix randomState(std::mt19937& gen)
-{
-    std::uniform_real_distribution<double> U(-1, 1);
-    std::uniform_real_distribution<double> logM
-    (
-        std::log(1e-3), std::log(std::log(3.0))
-    );
-    const scalar m = std::exp(logM(gen));
-    const vector l
-    (
-        std::exp(m*U(gen)), std::exp(m*U(gen)), std::exp(m*U(gen))
-    );
-    return randomRotation(gen)*l.asDiagonal()*randomRotation(gen).transpose();
-}
-
 bool sameBits(const matrix& A, const matrix& B)
 {
     return (A.array() == B.array()).all();

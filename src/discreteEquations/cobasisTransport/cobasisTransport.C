@@ -1,4 +1,7 @@
 #include "cobasisTransport.H"
+#include "foamEigen.H"
+
+using Foam::foamEigen::toEigen;
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -52,6 +55,40 @@ void Foam::cobasisTransport::reset()
         {
             a.setZero();
         }
+    }
+}
+
+
+void Foam::cobasisTransport::addFace
+(
+    const label c,
+    const cobasis::vector& SfOut,
+    const std::vector<phaseSide>& own,
+    const std::vector<phaseSide>& across,
+    const demFaceAssembly& assembly,
+    const reconstruction& rec
+)
+{
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if (!phases_.phase(k).solid()) continue;
+
+        const cobasis::vector vStar(assembly.vStar(k));
+        L_[k][c] += vStar*SfOut.transpose();
+
+        const double flux = vStar.dot(SfOut);
+
+        // Upwind face value; a trace upwind leaves the cell's own value
+        const phaseSide& up = (flux < 0) ? across[k] : own[k];
+        if (up.trace)
+        {
+            continue;
+        }
+        const cobasis::matrix Ac
+        (
+            toEigen(phases_.A(k)[c]) + rec.dtA(k, c)
+        );
+        advection_[k][c] += flux*(up.A - Ac);
     }
 }
 

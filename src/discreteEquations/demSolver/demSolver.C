@@ -57,16 +57,6 @@ void Foam::demSolver::internalFaces()
     const reconstruction& rec = reconstruction_();
     const bool centred = rec.timeCentred();
 
-    // The time-centred cobasis of a cell for the transport
-    const phaseSystem& phases = phases_;
-    const auto centredA = [&](const label c)
-    {
-        return [&, c](const label k) -> cobasis::matrix
-        {
-            return toEigen(phases.A(k)[c]) + rec.dtA(k, c);
-        };
-    };
-
     forAll(nei, facei)
     {
         const label o = own[facei];
@@ -80,8 +70,8 @@ void Foam::demSolver::internalFaces()
         const cobasis::vector S(toEigen(Sf[facei]));
         assembly_.addToCell(o, 0, magSf_[facei]);
         assembly_.addToCell(nb, 1, magSf_[facei]);
-        cobasis_.addFace(o, S, faceO_, faceN_, assembly_, centredA(o));
-        cobasis_.addFace(nb, -S, faceN_, faceO_, assembly_, centredA(nb));
+        cobasis_.addFace(o, S, faceO_, faceN_, assembly_, rec);
+        cobasis_.addFace(nb, -S, faceN_, faceO_, assembly_, rec);
 
         if (centred)
         {
@@ -101,15 +91,6 @@ void Foam::demSolver::boundaryFaces()
     const reconstruction& rec = reconstruction_();
     const bool centred = rec.timeCentred();
     const boundaryKinds& kinds = phases_.boundary();
-
-    const phaseSystem& phases = phases_;
-    const auto centredA = [&](const label c)
-    {
-        return [&, c](const label k) -> cobasis::matrix
-        {
-            return toEigen(phases.A(k)[c]) + rec.dtA(k, c);
-        };
-    };
 
     // The cell's face state of a face that is not coupled
     std::vector<phaseSide> cellFace(nPhases_);
@@ -198,7 +179,7 @@ void Foam::demSolver::boundaryFaces()
             assembly_.addToCell(celli, cellIsLeft ? 0 : 1, magSf_[facei]);
             cobasis_.addFace
             (
-                celli, S, side, ghost_, assembly_, centredA(celli)
+                celli, S, side, ghost_, assembly_, rec
             );
         }
     }
