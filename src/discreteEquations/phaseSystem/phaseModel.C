@@ -124,6 +124,7 @@ Foam::phaseModel::phaseModel
     index_(index),
     law_(name, dict),
     plastic_(),
+    failure_(),
     isentropicRelaxation_(false),
     isentrope_(-1, 0),
     pCavitation_(-GREAT),
@@ -152,7 +153,8 @@ Foam::phaseModel::phaseModel
         pMixture.mesh()
     ),
     epsilonPIndex_(-1),
-    plasticWorkIndex_(-1)
+    plasticWorkIndex_(-1),
+    damageIndex_(-1)
 {
     const fvMesh& mesh = pMixture.mesh();
     const word timeName(mesh.time().timeName());
@@ -169,11 +171,29 @@ Foam::phaseModel::phaseModel
         noneDict.add("type", "none");
         plastic_ = plasticModel::New(name, noneDict);
     }
-    if (plastic_->needsTemperature() && !law_.eos().hasTemperature())
+    if (law_.solid())
+    {
+        failure_ = failureModel::New(name, dict);
+    }
+    else
+    {
+        if (dict.found("failure"))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Phase " << name << ": failure is for solids only"
+                << exit(FatalIOError);
+        }
+        failure_ = failureModel::New(name, dictionary());
+    }
+    const char* needsT =
+        plastic_->needsTemperature() ? "plasticity"
+      : failure_->needsTemperature() ? "failure"
+      : nullptr;
+    if (needsT && !law_.eos().hasTemperature())
     {
         FatalIOErrorInFunction(dict)
-            << "Phase " << name << ": its plasticity needs a temperature,"
-            << " and its equationOfState " << law_.eos().type()
+            << "Phase " << name << ": its " << needsT << " needs a"
+            << " temperature, and its equationOfState " << law_.eos().type()
             << " gives none: add Cv to equationOfState"
             << exit(FatalIOError);
     }
@@ -229,6 +249,7 @@ Foam::phaseModel::phaseModel
     if (law_.solid())
     {
         carriedInfo_.append(plastic_->carriedVariables());
+        carriedInfo_.append(failure_->carriedVariables());
     }
     for
     (
@@ -286,6 +307,7 @@ Foam::phaseModel::phaseModel
     }
     epsilonPIndex_ = carriedIndex("epsilonP");
     plasticWorkIndex_ = carriedIndex("plasticWork");
+    damageIndex_ = carriedIndex("damage");
 
     checkInitialState();
     initCobasis(readA);

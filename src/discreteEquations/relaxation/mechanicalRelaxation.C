@@ -15,6 +15,7 @@ Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
     alpha_(nPhases_),
     trace_(nPhases_),
     isentropic_(nPhases_, false),
+    failed_(nPhases_, false),
     nVacuum_(0),
     err_(),
     nActive_(0),
@@ -40,6 +41,16 @@ Foam::scalar Foam::mechanicalRelaxation::relaxedVolume
           ? eos.dvIsentropicdp(pStar, s0.first(), s0.second())
           : 0;
         return eos.vIsentropic(max(pStar, pc), s0.first(), s0.second());
+    }
+    if (failed_[k])
+    {
+        // Failed material holds no tension below its cavitation pressure
+        const scalar pc = phases_[k].failure().cavitationPressure();
+        if (pStar < pc)
+        {
+            dvdp = 0;
+            return eos.vRelaxed(pc, 1/v0_[k], eh0_[k]);
+        }
     }
     dvdp = eos.dvRelaxeddp(pStar, 1/v0_[k], eh0_[k]);
     return eos.vRelaxed(pStar, 1/v0_[k], eh0_[k]);
@@ -79,7 +90,10 @@ bool Foam::mechanicalRelaxation::interfacePressure
             isentropic_[k]
           ? eos.pIsentropicMin(s0.first(), s0.second())
           : eos.pRelaxedMin(1/v0_[k], eh0_[k]);
-        if (!(isentropic_[k] && phases_.cavitationPressure(k) > pPath))
+        const bool held =
+            (isentropic_[k] && phases_.cavitationPressure(k) > pPath)
+         || (failed_[k] && phases_[k].failure().cavitationPressure() > pPath);
+        if (!held)
         {
             // v_k(p) grows without bound as p -> pPath
             lo = max(lo, pPath);
@@ -131,7 +145,17 @@ bool Foam::mechanicalRelaxation::interfacePressure
               ? 0.5*(lo + hi)
               : p + 2*max(mag(p - lo), scalar(1));
         }
-        if (mag(pNew - p) <= 1e-15*(mag(pNew) + pScale))
+        // Converged in p, and in the volume unless p is resolved to
+        // round-off: a nearly empty gas next to failed or cavitating
+        // material takes its volume at p* near 0, where a pressure
+        // tolerance relative to the metal's scale would leave the volume
+        // wrong by percent (and the closing of the volumes would hand
+        // that to the metal as a tension of GPa)
+        if
+        (
+            mag(pNew - p) <= 1e-15*(mag(pNew) + pScale)
+         && (mag(f) <= 1e-12*volume || mag(pNew - p) <= 1e-15*mag(pNew))
+        )
         {
             p = pNew;
             return true;
@@ -517,24 +541,30 @@ bool Foam::mechanicalRelaxation::relaxPlastic
         {
             phase.carried(i)[c] = q.carried[k][i][c];
         }
-        if (ph.solid() && !trace_[k])
+        if (ph.solid() && !trace_[k] && !failed_[k])
         {
-            // The temperature before the step, for a flow stress that
-            // depends on it (the phase model made sure the equation of
-            // state has one)
+            // The temperature before the step, for a flow stress or a
+            // damage that depends on it (the phase model made sure the
+            // equation of state has one)
             const plasticModel& plastic = phase.plastic();
-            const scalar T =
+            const bool needsT =
                 plastic.needsTemperature()
-              ? ph.eos().T(1/v0_[k], eh0_[k])
-              : 0;
+             || phase.failure().needsTemperature();
+            const scalar T = needsT ? ph.eos().T(1/v0_[k], eh0_[k]) : 0;
+            scalar& epsP = phase.carried(phase.epsilonPIndex())[c];
+            const scalar epsPOld = epsP;
             const scalar heat = plastic.correct
             (
-                q.A[k][c], phase.carried(phase.epsilonPIndex())[c],
-                ph.elastic(), dt, T
+                q.A[k][c], epsP, ph.elastic(), dt, T
             );
             eh0_[k] += heat;
             phase.carried(phase.plasticWorkIndex())[c] += heat;
             heated = heated || heat > 0;
+            if (phase.damageIndex() >= 0)
+            {
+                updateDamage(c, q, k, epsP - epsPOld, dt, T);
+                heated = heated || failed_[k];
+            }
         }
     }
     return heated;
@@ -625,6 +655,10 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
         {
             continue;
         }
+
+        // Failed material: no shear stress; in tension, the fluids of the
+        // cell take part in the pressure relaxation
+        relaxFailed(c, q);
 
         // 3. Pressure relaxation among the phases that are not traces
         scalar pStar;
