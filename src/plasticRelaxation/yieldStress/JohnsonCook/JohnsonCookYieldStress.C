@@ -51,7 +51,9 @@ Foam::yieldStresses::JohnsonCook::JohnsonCook
     Tm_(read(dict, "Tm")),
     epsDot0_(dict.found("epsDot0") ? readPositive(dict, "epsDot0") : 1),
     rDeltaT_(0),
-    rEpsDot0_(1/epsDot0_)
+    rEpsDot0_(1/epsDot0_),
+    lastT_(Tr_),
+    lastThermal_(1)
 {
     check(dict);
     rDeltaT_ = 1/(Tm_ - Tr_);
@@ -67,16 +69,21 @@ Foam::scalar Foam::yieldStresses::JohnsonCook::sigmaY
     const scalar T
 ) const
 {
-    // Thermal factor 1 - Th^m; none at and above melting
-    scalar thermal = 1;
-    const scalar Th = (T - Tr_)*rDeltaT_;
-    if (Th > 0)
+    // Thermal factor 1 - Th^m, 0 at and above melting (that of the last
+    // T if T has not changed)
+    if (T != lastT_)
     {
-        if (!(Th < 1))
-        {
-            return 0;
-        }
-        thermal = 1 - (m_ == 1 ? Th : std::pow(Th, m_));
+        const scalar Th = (T - Tr_)*rDeltaT_;
+        lastThermal_ =
+            !(Th > 0) ? 1
+          : !(Th < 1) ? 0
+          : 1 - (m_ == 1 ? Th : std::pow(Th, m_));
+        lastT_ = T;
+    }
+    const scalar thermal = lastThermal_;
+    if (thermal == 0)
+    {
+        return 0;
     }
 
     // Strain hardening A + B epsP^n (epsP >= 0; 0^n = 0 for n > 0)
