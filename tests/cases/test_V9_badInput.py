@@ -22,6 +22,13 @@ directories holds a NaN.
     missingField  no 0/rho.air
     unknownEoS    equationOfState type vanDerWaals
     badPhaseType  phase type liquid (only solid | fluid)
+    jcWithoutCv   copper with a Johnson-Cook flow stress and an equation
+                  of state without Cv (no temperature)
+    jcBadN        Johnson-Cook n 0 (the message names n)
+    jcTmBelowTr   Johnson-Cook Tm 200 below Tr 298
+    tableNotIncreasing  yieldStress table with epsP 0, 0.1, 0.05
+    tableNotFromZero    yieldStress table starting at epsP 0.01
+    writeTWithoutCv     air with writeTemperature yes and no Cv
 The valid base case must run to its end time (control).
 
 Unphysical runs (must stop during the run with a FatalError whose message
@@ -99,6 +106,10 @@ def copy_field(case, src, dst):
 
 PP = "constant/phaseProperties"
 
+# OFHC copper (MATERIALS.md section 3) in place of 'sigmaY 3e8;'
+JC = ("yieldStress { type JohnsonCook; A 9e7; B 2.92e8; n 0.31; C 0.025; "
+      "m 1.09; Tr 298; Tm 1356; }")
+
 # name: (modification of the prepared case, keyword patterns, description)
 BAD_INPUT = [
     ("a07",
@@ -131,6 +142,37 @@ BAD_INPUT = [
      lambda c: edit(c, PP, "type            fluid;",
                     "type            liquid;"),
      [r"liquid"], "phase type liquid"),
+    ("jcWithoutCv",
+     lambda c: edit(c, PP, "sigmaY 3e8;", JC),
+     [r"copper", r"\bCv\b", r"temperature"],
+     "Johnson-Cook copper without Cv"),
+    ("jcBadN",
+     lambda c: (edit(c, PP, "sigmaY 3e8;", JC),
+                edit(c, PP, "n 0.31;", "n 0;"),
+                edit(c, PP, "pInf 3.42e10; }", "pInf 3.42e10; Cv 383; }")),
+     [r"copper", r"\bn = 0\b"], "Johnson-Cook n = 0"),
+    ("jcTmBelowTr",
+     lambda c: (edit(c, PP, "sigmaY 3e8;", JC),
+                edit(c, PP, "Tm 1356;", "Tm 200;"),
+                edit(c, PP, "pInf 3.42e10; }", "pInf 3.42e10; Cv 383; }")),
+     [r"copper", r"\bTm = 200\b", r"\bTr\b"], "Johnson-Cook Tm 200 < Tr"),
+    ("tableNotIncreasing",
+     lambda c: edit(c, PP, "sigmaY 3e8;",
+                    "yieldStress { type table; values ((0 3e8) (0.1 4e8) "
+                    "(0.05 5e8)); }"),
+     [r"copper", r"values", r"strictly increasing"],
+     "table epsP 0, 0.1, 0.05"),
+    ("tableNotFromZero",
+     lambda c: edit(c, PP, "sigmaY 3e8;",
+                    "yieldStress { type table; values ((0.01 3e8) "
+                    "(0.1 4e8)); }"),
+     [r"copper", r"values", r"epsP = 0\.01"], "table from epsP 0.01"),
+    ("writeTWithoutCv",
+     lambda c: edit(c, PP, "type stiffenedGas; gamma 1.4; pInf 0; }",
+                    "type stiffenedGas; gamma 1.4; pInf 0; }\n"
+                    "    writeTemperature yes;"),
+     [r"\bair\b", r"writeTemperature", r"\bCv\b"],
+     "air with writeTemperature yes, no Cv"),
 ]
 
 

@@ -109,6 +109,23 @@ void Foam::phaseModel::checkInitialState() const
 }
 
 
+bool Foam::phaseModel::readWriteTemperature(const dictionary& dict) const
+{
+    const bool needed = needsTemperature();
+    const bool write =
+        dict.getOrDefault<Switch>("writeTemperature", Switch(needed));
+    if (write && !law_.eos().hasTemperature())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Phase " << name() << ": writeTemperature needs a"
+            << " temperature, and its equationOfState "
+            << law_.eos().type() << " gives none: add Cv to"
+            << " equationOfState" << exit(FatalIOError);
+    }
+    return write;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::phaseModel::phaseModel
@@ -197,6 +214,7 @@ Foam::phaseModel::phaseModel
             << " gives none: add Cv to equationOfState"
             << exit(FatalIOError);
     }
+    const bool writeT = readWriteTemperature(dict);
 
     IOobject pIO
     (
@@ -214,6 +232,14 @@ Foam::phaseModel::phaseModel
     {
         pIO.readOpt() = IOobject::NO_READ;
         p_.reset(new volScalarField(pIO, pMixture));
+    }
+
+    if (writeT)
+    {
+        temperature_.reset
+        (
+            new phaseTemperature(name, law_.eos(), rho_, p_())
+        );
     }
 
     IOobject AIO
