@@ -10,6 +10,7 @@
 #include "unitTestTools.H"
 
 #include <functional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -583,4 +584,86 @@ TEST(badInput, JohnsonCookYieldStress)
     std::string noStrength(jc("A", "0"));
     noStrength.replace(noStrength.find("B 2.92e8"), 8, "B 0");
     expectPlasticityError(noStrength, {"copper", "A = 0", "B = 0"});
+
+TEST(badInput, MieGruneisen)
+{
+    // The MieGruneisen keywords of MATERIALS.md: each one missing, zero or
+    // negative stops with a FatalIOError naming the phase and the entry
+    const std::vector<std::pair<std::string, std::string>> entries
+    {
+        {"rho0", "8930"}, {"c0", "3939"}, {"s", "1.5"}, {"Gamma0", "2"},
+        {"Cv", "383"}, {"T0", "298"}
+    };
+    const auto eosText = [&](const std::string& skip, const std::string& value)
+    {
+        std::string text("equationOfState { type MieGruneisen;");
+        for (const auto& kv : entries)
+        {
+            if (kv.first == skip)
+            {
+                if (!value.empty()) text += " " + kv.first + " " + value + ";";
+            }
+            else
+            {
+                text += " " + kv.first + " " + kv.second + ";";
+            }
+        }
+        return text + " }";
+    };
+    const std::string metal("type metal; rho0 8930; mu 4.4967e10;");
+
+    EXPECT_NO_THROW
+    (
+        hyperelasticPhase("copper", dictFrom(phaseText("solid", metal, eosText("", ""))))
+    );
+    EXPECT_NO_THROW
+    (
+        hyperelasticPhase("water", dictFrom(phaseText("fluid", "", eosText("", ""))))
+    );
+
+    for (const auto& kv : entries)
+    {
+        const std::string& key = kv.first;
+        expectPhaseError
+        (
+            "copper", phaseText("solid", metal, eosText(key, "")),
+            {"copper", "MieGruneisen", "keyword " + key}
+        );
+        for (const char* bad : {"0", "-1"})
+        {
+            expectPhaseError
+            (
+                "copper", phaseText("solid", metal, eosText(key, bad)),
+                {"copper", "equationOfState " + key + " = " + bad, "positive"}
+            );
+        }
+    }
+    // A fluid phase too (no elasticity to stop it first)
+    expectPhaseError
+    (
+        "water", phaseText("fluid", "", eosText("c0", "-1500")),
+        {"water", "equationOfState c0 = -1500"}
+    );
+
+    // Gamma0 >= 2 s: the Hugoniot from rest would reach its limiting
+    // compression 2/Gamma0 before the pole 1/s
+    expectPhaseError
+    (
+        "copper",
+        phaseText
+        (
+            "solid", metal,
+            "equationOfState { type MieGruneisen; rho0 8930; c0 3939; s 1;"
+            " Gamma0 2; Cv 383; T0 298; }"
+        ),
+        {"copper", "equationOfState Gamma0 = 2", "2 s = 2"}
+    );
+
+    // The shear energy's rho0 must be the equation of state's
+    expectPhaseError
+    (
+        "copper",
+        phaseText("solid", "type metal; rho0 8900; mu 4.4967e10;", eosText("", "")),
+        {"copper", "equationOfState rho0 = 8930", "elasticity rho0 = 8900"}
+    );
 }

@@ -44,14 +44,15 @@ void Foam::phaseModel::readRelaxationPath(const dictionary& dict)
         const Pair<scalar> ref(dict.get<Pair<scalar>>("referenceIsentrope"));
         if
         (
-            !isentropicRelaxation_ || !(ref.first() > 0)
-         || !(ref.second() > eos.pMin(ref.first()))
+            !isentropicRelaxation_
+         || !eos.admissible(ref.first(), ref.second())
         )
         {
             FatalIOErrorInFunction(dict)
                 << "Phase " << name << ": referenceIsentrope " << ref
-                << " needs pressureRelaxation isentropic, rho > 0 and"
-                << " p > " << eos.pMin(ref.first()) << exit(FatalIOError);
+                << " needs pressureRelaxation isentropic, 0 < rho < "
+                << eos.rhoMax() << " and p > " << eos.pMin(ref.first())
+                << exit(FatalIOError);
         }
         isentrope_ =
             Pair<scalar>(ref.first(), eos.e(ref.first(), ref.second()));
@@ -97,13 +98,13 @@ void Foam::phaseModel::checkInitialState() const
     const scalarField& pk = p_->primitiveField();
     forAll(rho, celli)
     {
-        if (!(rho[celli] > 0) || !(pk[celli] > eos.pMin(rho[celli])))
+        if (!eos.admissible(rho[celli], pk[celli]))
         {
             FatalErrorInFunction
                 << "Phase " << name() << " starts in cell " << celli
                 << " with rho = " << rho[celli] << ", p = " << pk[celli]
-                << ": need rho > 0 and p > " << eos.pMin(rho[celli])
-                << exit(FatalError);
+                << ": need 0 < rho < " << eos.rhoMax() << " and p > "
+                << eos.pMin(rho[celli]) << exit(FatalError);
         }
     }
 }

@@ -2,6 +2,8 @@
 #include "alphaClosure.H"
 #include "foamEigen.H"
 
+#include <cmath>
+
 using Foam::foamEigen::toTensor;
 
 
@@ -433,6 +435,13 @@ void Foam::mechanicalRelaxation::screenEnergies
     {
         if (trace_[k]) continue;
         const equationOfState& eos = phases_.phase(k).eos();
+        if (!(1/v0_[k] < eos.rhoMax()))
+        {
+            // Beyond the highest density of the equation of state (the
+            // pole of a Mie-Grueneisen Hugoniot) there is no pressure
+            fail(c, k, "rho>=rhoMax", 1/v0_[k]);
+            continue;
+        }
         const scalar pk = eos.p(1/v0_[k], eh0_[k]);
         if (!(pk > eos.pMin(1/v0_[k])))
         {
@@ -504,6 +513,13 @@ void Foam::mechanicalRelaxation::relaxTraces
         if (!trace_[k]) continue;
         const hyperelasticPhase& ph = phases_.phase(k);
         const scalar rho = 1/v0_[k];
+        if (!(rho < ph.eos().rhoMax()))
+        {
+            // A trace squeezed beyond the highest density of its equation
+            // of state has no state to be reset to
+            fail(c, k, "rho>=rhoMax", rho);
+            continue;
+        }
         scalar pk = max(pStar, ph.eos().pMin(rho) + 1);
         const scalar eeOld = ph.elasticEnergy(q.A[k][c]);
         if (ph.solid())
@@ -580,6 +596,7 @@ void Foam::mechanicalRelaxation::vacuumAfterRelaxation()
         (
             phases_.pVacuum() >= 0 && !trace_[k]
          && !phases_.phase(k).solid()
+         && 1/v0_[k] < eos.rhoMax()
          && !(eos.p(1/v0_[k], eh0_[k]) > eos.pMin(1/v0_[k]))
         )
         {
@@ -603,12 +620,24 @@ void Foam::mechanicalRelaxation::checkAndStore
         const cobasis::matrix& A = q.A[k][c];
 
         const scalar rho = 1/v0_[k];
-        const scalar p = ph.eos().p(rho, eh0_[k]);
+
+        // No pressure outside the density range (a Mie-Grueneisen phase
+        // beyond rhoMax gives NaN, and comparing a NaN traps under
+        // FOAM_SIGFPE): the phase fails on rho and keeps its last
+        // pressure (the step is retried or stopped). A trace there has
+        // already failed (relaxTraces)
+        const bool inRange = rho > 0 && rho < ph.eos().rhoMax();
+        const scalar p =
+            inRange ? ph.eos().p(rho, eh0_[k]) : phases_.p(k)[c];
 
         if (!trace_[k])
         {
             if (!(rho > 0)) fail(c, k, "rho", rho);
-            if (!(p > ph.eos().pMin(rho))) fail(c, k, "p", p);
+            if (!(rho < ph.eos().rhoMax())) fail(c, k, "rho>=rhoMax", rho);
+            if (inRange && !(std::isfinite(p) && p > ph.eos().pMin(rho)))
+            {
+                fail(c, k, "p", p);
+            }
             if (!(alpha_[k] <= 1)) fail(c, k, "alpha", alpha_[k]);
             if (ph.solid() && !(A.determinant() > 0))
             {
