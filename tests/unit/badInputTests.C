@@ -584,6 +584,8 @@ TEST(badInput, JohnsonCookYieldStress)
     std::string noStrength(jc("A", "0"));
     noStrength.replace(noStrength.find("B 2.92e8"), 8, "B 0");
     expectPlasticityError(noStrength, {"copper", "A = 0", "B = 0"});
+}
+
 
 TEST(badInput, MieGruneisen)
 {
