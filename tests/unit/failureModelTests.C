@@ -77,8 +77,9 @@ TEST(failureModel, damageIsCarriedBetweenZeroAndOne)
     )
     {
         const auto f = failureFrom(text);
-        ASSERT_EQ(f->carriedVariables().size(), 1) << text;
-        const carriedVariable& D = f->carriedVariables()[0];
+        const carriedVariableList vars(f->carriedVariables());
+        ASSERT_EQ(vars.size(), 1) << text;
+        const carriedVariable& D = vars[0];
         EXPECT_EQ(D.name, "damage");
         EXPECT_EQ(D.initial, 0);
         EXPECT_EQ(D.lower, 0);
