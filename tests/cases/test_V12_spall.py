@@ -4,8 +4,8 @@ tensile pressure cutoff (failure { type spall; }) in a 1-D copper
 flyer-plate impact, and conservation through failure.
 
 Case: tutorials/impactFoam/spallPlate at 25 um cells (400 cells, 4 us): a
-2 mm copper flyer at 200 m/s on a 4 mm copper target, free surfaces in air,
-sigmaSpall 1.3 GPa. The release waves from the flyer's back and from the
+2 mm OFHC copper flyer (Mie-Grueneisen, Johnson-Cook strength) at 200 m/s
+on a 4 mm copper target, free surfaces in air, sigmaSpall 1.3 GPa. The release waves from the flyer's back and from the
 target's free surface meet 2 mm inside the target (x = 5 mm at impact).
 Checks:
   - the target's free surface first rises to the impact speed (2 %);
@@ -19,6 +19,9 @@ Checks:
     beyond 1e-3 sigmaSpall;
   - the free-surface velocity shows the pull-back: it falls by more than
     10 m/s below its plateau and rises again (the spall signal);
+  - failing over spallTime 0.1 us instead of at once: the copper holds no
+    tension beyond sigmaSpall either, and the pull-back is larger (the
+    signal is no longer a spike as narrow as the smeared release front);
   - without failure (failure { type none; }), no damage is carried, the
     target holds a tension beyond 2 sigmaSpall, and the free surface
     falls by more than twice the pull-back of the spalled target.
@@ -143,11 +146,30 @@ def main():
         checks.check("V12_pullBack", dU > 10 and rebound > 5,
                      "plateau %.2f, minimum %.2f m/s at %.3g s: dU = %.2f "
                      "m/s, then up by %.2f m/s (acoustic estimate "
-                     "rho0 c_b dU/2 = %.4g Pa with c_b 3815 m/s)"
+                     "rho0 c_b dU/2 = %.4g Pa with c_b 3940 m/s)"
                      % (pb[0], pb[1], pb[3], dU, rebound,
-                        0.5*8930*3815*dU))
+                        0.5*8930*3940*dU))
     else:
         checks.fail("V12_pullBack", "no pull-back signal")
+
+    # Failing over spallTime 0.1 us: the tension held falls with D
+    try:
+        soft = run_spall("V12_spallTime", "failure { type spall; "
+                         "sigmaSpall 1.3e9; spallTime 1e-7; }")
+        ts_, us_ = fs.history(soft, "copper")
+    except fc.FoamError as e:
+        checks.fail("V12_spallTime_run", e.summary)
+        checks.exit()
+    pbs = fs.pull_back(ts_, us_)
+    pIntactS = min(r[1] for r in scan(soft))
+    dUs = pbs[0] - pbs[1] if pbs and pbs[1] is not None else float("nan")
+    checks.check("V12_spallTime",
+                 pIntactS >= -1.05*SIGMA_SPALL and dU is not None
+                 and dUs > dU,
+                 "spallTime 0.1 us: lowest pressure of copper not failed "
+                 "%.4g Pa (bound %.4g); pull-back %.2f m/s (at once: %s)"
+                 % (pIntactS, -1.05*SIGMA_SPALL, dUs,
+                    "%.2f" % dU if dU else None))
 
     # Without failure
     try:

@@ -102,6 +102,34 @@ TEST(failureModel, spallIsATensilePressureCutoff)
 }
 
 
+TEST(failureModel, spallTimeSoftensLinearly)
+{
+    const auto f = failureFrom
+    (
+        "failure { type spall; sigmaSpall 1.3e9; spallTime 1e-7; }"
+    );
+    // Below the cutoff D starts to grow by dt/tau and the plastic step
+    // leaves it alone; the floor falls from -sigmaSpall to 0 with D
+    const double dt = 1e-9;
+    EXPECT_EQ(f->spall(0, -1.2e9, dt), 0);
+    EXPECT_NEAR(f->spall(0, -1.31e9, dt), 0.01, 1e-15);
+    EXPECT_EQ(f->damage(0, 0, 0, -1.31e9, 0, 300), 0);
+    EXPECT_EQ(f->pFloor(0), -GREAT);
+    EXPECT_NEAR(f->pFloor(0.25), -0.75*1.3e9, 1e-6);
+    EXPECT_EQ(f->pFloor(1), 0);
+    // It grows only while the tension exceeds what the material holds
+    EXPECT_EQ(f->spall(0.5, -0.6e9, dt), 0.5);
+    EXPECT_NEAR(f->spall(0.5, -0.7e9, dt), 0.51, 1e-15);
+    EXPECT_EQ(f->spall(0.999, -1e9, 0.1), 1);
+    // Without spallTime: failed at once, no floor before
+    const auto g = failureFrom("failure { type spall; sigmaSpall 1.3e9; }");
+    EXPECT_EQ(g->spall(0, -1.31e9, dt), 1);
+    EXPECT_EQ(g->spall(0, -1.29e9, dt), 0);
+    EXPECT_EQ(g->pFloor(0.5), -GREAT);
+    EXPECT_EQ(g->pFloor(1), 0);
+}
+
+
 TEST(failureModel, JohnsonCookIncrementIsThePlasticStrainOverEpsF)
 {
     const auto f = failureFrom(jcCopper);
@@ -206,6 +234,21 @@ TEST(failureModel, badInputNamesPhaseAndEntry)
     expectFailureError
     (
         jc + "D1 0.54; D2 4.89; D3 -3.03; epsDot0 0; }", {"copper", "epsDot0"}
+    );
+    expectFailureError
+    (
+        "failure { type spall; sigmaSpall 1e9; spallTime -1e-7; }",
+        {"copper", "spallTime"}
+    );
+    expectFailureError
+    (
+        jc + "D1 0.54; D2 4.89; D3 -3.03; sigmaSpall 1e9; spallTime 1e-7; }",
+        {"copper", "spallTime"}
+    );
+    expectFailureError
+    (
+        "failure { type spall; sigmaSpall 1e9; cavitationPressure -2e9; }",
+        {"copper", "cavitationPressure"}
     );
     // Temperature dependence without temperatures
     expectFailureError

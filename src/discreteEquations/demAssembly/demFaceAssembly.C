@@ -24,11 +24,11 @@ Foam::demFaceAssembly::demFaceAssembly
 {
     const label nCells = phases.mesh().nCells();
     damageIndex_.resize(nPhases_);
-    pFailed_.resize(nPhases_);
+    failure_.resize(nPhases_);
     for (label k = 0; k < nPhases_; ++k)
     {
         damageIndex_[k] = phases[k].damageIndex();
-        pFailed_[k] = phases[k].failure().cavitationPressure();
+        failure_[k] = &phases[k].failure();
         dAlpha_[k].resize(nCells);
         dMass_[k].resize(nCells);
         dMomentum_[k].resize(nCells);
@@ -53,19 +53,21 @@ void Foam::demFaceAssembly::limitFailedTension
 ) const
 {
     const label iD = damageIndex_[k];
-    if
+    if (iD < 0)
+    {
+        return;
+    }
+    const double floor = max
     (
-        iD < 0
-     || !(
-            failureModel::failed(sl.carried[iD])
-         || failureModel::failed(sr.carried[iD])
-        )
-    )
+        failure_[k]->pFloor(sl.carried[iD]),
+        failure_[k]->pFloor(sr.carried[iD])
+    );
+    if (!(floor > -GREAT))
     {
         return;
     }
     // Normal traction t*_n = -p* in the face frame
-    const double excess = pFailed_[k] + sol.tStar(0);
+    const double excess = floor + sol.tStar(0);
     if (excess > 0)
     {
         sol.tStar(0) -= excess;

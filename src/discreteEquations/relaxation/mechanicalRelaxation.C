@@ -18,6 +18,8 @@ Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
     trace_(nPhases_),
     isentropic_(nPhases_, false),
     failed_(nPhases_, false),
+    held_(nPhases_, false),
+    pHeld_(nPhases_, 0),
     nVacuum_(0),
     err_(),
     nActive_(0),
@@ -44,15 +46,11 @@ Foam::scalar Foam::mechanicalRelaxation::relaxedVolume
           : 0;
         return eos.vIsentropic(max(pStar, pc), s0.first(), s0.second());
     }
-    if (failed_[k])
+    if (held_[k] && pStar < pHeld_[k])
     {
-        // Failed material holds no tension below its cavitation pressure
-        const scalar pc = phases_[k].failure().cavitationPressure();
-        if (pStar < pc)
-        {
-            dvdp = 0;
-            return eos.vRelaxed(pc, 1/v0_[k], eh0_[k]);
-        }
+        // Damaged material holds no tension below its floor
+        dvdp = 0;
+        return eos.vRelaxed(pHeld_[k], 1/v0_[k], eh0_[k]);
     }
     dvdp = eos.dvRelaxeddp(pStar, 1/v0_[k], eh0_[k]);
     return eos.vRelaxed(pStar, 1/v0_[k], eh0_[k]);
@@ -94,7 +92,7 @@ bool Foam::mechanicalRelaxation::interfacePressure
           : eos.pRelaxedMin(1/v0_[k], eh0_[k]);
         const bool held =
             (isentropic_[k] && phases_.cavitationPressure(k) > pPath)
-         || (failed_[k] && phases_[k].failure().cavitationPressure() > pPath);
+         || (held_[k] && pHeld_[k] > pPath);
         if (!held)
         {
             // v_k(p) grows without bound as p -> pPath
@@ -687,7 +685,7 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
 
         // Failed material: no shear stress; in tension, the fluids of the
         // cell take part in the pressure relaxation
-        relaxFailed(c, q);
+        relaxFailed(c, q, dt);
 
         // 3. Pressure relaxation among the phases that are not traces
         scalar pStar;

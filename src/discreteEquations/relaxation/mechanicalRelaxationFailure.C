@@ -20,7 +20,8 @@ void Foam::mechanicalRelaxation::removeShear
 void Foam::mechanicalRelaxation::relaxFailed
 (
     const label c,
-    conservedState& q
+    conservedState& q,
+    const scalar dt
 )
 {
     bool open = false;
@@ -29,32 +30,40 @@ void Foam::mechanicalRelaxation::relaxFailed
         const phaseModel& phase = phases_[k];
         const label iD = phase.damageIndex();
         failed_[k] = false;
-        if (iD < 0)
+        held_[k] = false;
+        if (iD < 0 || trace_[k])
         {
+            // A trace's state is the cell's business (relaxTraces)
             continue;
         }
 
-        // Failed before the step, or now beyond the tensile cutoff (the
-        // cutoff acts within the step that reaches it, and on a cell whose
-        // damage the transport mixed below 1)
+        // The tensile cutoff acts within the step that passes it (at once,
+        // or over spallTime), also on a cell whose damage the transport
+        // mixed below 1
         const failureModel& failure = phase.failure();
         scalar& D = q.carried[k][iD][c];
         const scalar pk = phase.eos().p(1/v0_[k], eh0_[k]);
-        failed_[k] =
-            failureModel::failed(D)
-         || (failure.sigmaSpall() > 0 && pk < -failure.sigmaSpall());
-        if (!failed_[k])
+        D = failure.spall(D, pk, dt);
+        const scalar floor = failure.pFloor(D);
+        if (!(floor > -GREAT))
         {
             continue;
         }
-        D = 1;
+        held_[k] = true;
+        pHeld_[k] = floor;
 
-        // No deviatoric stress: the shear energy becomes heat
-        removeShear(c, q, k);
+        if (failureModel::failed(D))
+        {
+            // No deviatoric stress: the shear energy becomes heat
+            D = 1;
+            failed_[k] = true;
+            removeShear(c, q, k);
+        }
 
-        // In tension (the whole solid, or a trace of it next to a fluid)
-        // it opens up: the fluids of the cell take the volume
-        open = open || pk < failure.cavitationPressure();
+        // In tension below its floor (the whole solid, or a trace of it
+        // next to a fluid) it opens up: the fluids of the cell take the
+        // volume
+        open = open || pk < floor;
     }
     if (!open)
     {
@@ -89,11 +98,11 @@ void Foam::mechanicalRelaxation::relaxFailed
     }
     if (!fluid)
     {
-        // Nothing can take the volume: the failed material keeps its
+        // Nothing can take the volume: the damaged material keeps its
         // tension (a case without a fluid phase)
         for (label k = 0; k < nPhases_; ++k)
         {
-            failed_[k] = false;
+            held_[k] = false;
         }
     }
 }
@@ -133,6 +142,8 @@ void Foam::mechanicalRelaxation::updateDamage
         D = 1;
         removeShear(c, q, k);
         failed_[k] = true;
+        held_[k] = true;
+        pHeld_[k] = failure.cavitationPressure();
     }
 }
 

@@ -72,6 +72,13 @@ Foam::failureModels::JohnsonCook::JohnsonCook
     if (!(D5_ > -1)) badEntry(dict, "D5", D5_, "> -1");
     if (!(epsDot0_ > 0)) badEntry(dict, "epsDot0", epsDot0_, "> 0");
     rEpsDot0_ = 1/epsDot0_;
+    if (spallTime_ > 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Phase " << phaseName << ": spallTime is for failure type"
+            << " spall (a partial Johnson-Cook damage is no softening)"
+            << exit(FatalIOError);
+    }
 
     if (D5_ != 0)
     {

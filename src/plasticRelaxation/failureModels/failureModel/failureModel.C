@@ -17,7 +17,8 @@ Foam::failureModel::failureModel
 :
     phaseName_(phaseName),
     sigmaSpall_(0),
-    pCavitation_(dict.getOrDefault<scalar>("cavitationPressure", 0))
+    pCavitation_(dict.getOrDefault<scalar>("cavitationPressure", 0)),
+    spallTime_(dict.getOrDefault<scalar>("spallTime", 0))
 {
     if (dict.found("sigmaSpall"))
     {
@@ -30,6 +31,20 @@ Foam::failureModel::failureModel
     if (!(pCavitation_ > -GREAT && pCavitation_ < GREAT))
     {
         badEntry(dict, "cavitationPressure", pCavitation_, "finite");
+    }
+    if (!(spallTime_ >= 0))
+    {
+        badEntry(dict, "spallTime", spallTime_, ">= 0");
+    }
+    if (spallTime_ > 0 && !(sigmaSpall_ > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Phase " << phaseName_ << ": failure entry spallTime needs"
+            << " sigmaSpall" << exit(FatalIOError);
+    }
+    if (sigmaSpall_ > 0 && !(pCavitation_ > -sigmaSpall_))
+    {
+        badEntry(dict, "cavitationPressure", pCavitation_, "> -sigmaSpall");
     }
 }
 
@@ -91,13 +106,45 @@ Foam::scalar Foam::failureModel::damage
     const scalar T
 ) const
 {
-    if (failed(D) || (sigmaSpall_ > 0 && p < -sigmaSpall_))
+    if
+    (
+        failed(D)
+     || (sigmaSpall_ > 0 && spallTime_ == 0 && p < -sigmaSpall_)
+    )
     {
         return 1;
     }
     const scalar dD =
         dEpsP > 0 ? damageIncrement(dEpsP, epsPDot, p, sigmaEq, T) : 0;
     return min(D + dD, scalar(1));
+}
+
+
+Foam::scalar Foam::failureModel::spall
+(
+    const scalar D,
+    const scalar p,
+    const scalar dt
+) const
+{
+    if (failed(D))
+    {
+        return 1;
+    }
+    if (!(sigmaSpall_ > 0))
+    {
+        return D;
+    }
+    if (spallTime_ == 0)
+    {
+        return p < -sigmaSpall_ ? 1 : D;
+    }
+    // Growing while the tension exceeds what the material still holds
+    if (p < (1 - D)*(-sigmaSpall_) + D*pCavitation_)
+    {
+        return min(D + dt/spallTime_, scalar(1));
+    }
+    return D;
 }
 
 
