@@ -10,6 +10,7 @@
 #include "unitTestTools.H"
 
 #include <functional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -463,5 +464,208 @@ TEST(badInput, yieldStress)
     expectPlasticityError
     (
         "type vonMises; tau 0;", {"sigmaY", "sigmaY0", "yieldStress", "copper"}
+    );
+}
+
+
+TEST(badInput, tableYieldStress)
+{
+    // Every message names the phase and the entry (values) and says what
+    // is wrong
+    const auto table = [](const std::string& values)
+    {
+        return
+            "type vonMises; yieldStress { type table; " + values
+          + " } tau 0;";
+    };
+    expectPlasticityError(table(""), {"copper", "table", "values"});
+    expectPlasticityError
+    (
+        table("values ();"), {"copper", "values", "at least one pair"}
+    );
+    expectPlasticityError
+    (
+        table("values ((0.01 9e7) (0.1 2.2e8));"),
+        {"copper", "values", "epsP = 0.01", "epsP = 0"}
+    );
+    expectPlasticityError
+    (
+        table("values ((0 0) (0.1 2.2e8));"),
+        {"copper", "values", "first stress", "positive"}
+    );
+    expectPlasticityError
+    (
+        table("values ((0 -9e7) (0.1 2.2e8));"),
+        {"copper", "values", "first stress", "positive"}
+    );
+    expectPlasticityError
+    (
+        table("values ((0 9e7) (0.1 2.2e8) (0.1 3.3e8));"),
+        {"copper", "values", "strictly increasing", "pair 2"}
+    );
+    expectPlasticityError
+    (
+        table("values ((0 9e7) (0.5 2.2e8) (0.1 3.3e8));"),
+        {"copper", "values", "strictly increasing", "pair 2"}
+    );
+    expectPlasticityError
+    (
+        table("values ((0 9e7) (0.1 -2.2e8));"),
+        {"copper", "values", "negative", "pair 1"}
+    );
+}
+
+
+TEST(badInput, JohnsonCookYieldStress)
+{
+    // Each entry missing and each bad value: the message names the phase
+    // and the entry
+    const std::vector<std::pair<std::string, std::string>> entries
+    {
+        {"A", "9e7"}, {"B", "2.92e8"}, {"n", "0.31"}, {"C", "0.025"},
+        {"m", "1.09"}, {"Tr", "298"}, {"Tm", "1356"}, {"epsDot0", "1"}
+    };
+    const auto jc = [&](const std::string& key, const std::string& value)
+    {
+        std::string text("type vonMises; yieldStress { type JohnsonCook;");
+        for (const auto& e : entries)
+        {
+            if (e.first == key)
+            {
+                if (!value.empty())
+                {
+                    text += " " + key + " " + value + ";";
+                }
+            }
+            else
+            {
+                text += " " + e.first + " " + e.second + ";";
+            }
+        }
+        return text + " } tau 0;";
+    };
+
+    // The valid set is accepted, and so are the optional entries left out
+    plasticModel::New("copper", dictFrom(jc("", "")));
+    plasticModel::New("copper", dictFrom(jc("C", "")));
+    plasticModel::New("copper", dictFrom(jc("epsDot0", "")));
+
+    // Required entries missing
+    for (const std::string key : {"A", "B", "n", "m", "Tr", "Tm"})
+    {
+        expectPlasticityError
+        (
+            jc(key, ""), {"copper", "JohnsonCook", "needs the entry " + key}
+        );
+    }
+
+    // Bad values
+    const std::vector<std::vector<std::string>> bad
+    {
+        {"A", "-1e7", "A = -1e+07", "non-negative"},
+        {"B", "-2e8", "B = -2e+08", "non-negative"},
+        {"n", "0", "n = 0", "positive"},
+        {"n", "-0.3", "n = -0.3", "positive"},
+        {"m", "0", "m = 0", "positive"},
+        {"m", "-1", "m = -1", "positive"},
+        {"C", "-0.01", "C = -0.01", "non-negative"},
+        {"epsDot0", "0", "epsDot0 = 0", "positive"},
+        {"epsDot0", "-1", "epsDot0 = -1", "positive"},
+        {"Tm", "298", "Tm = 298", "Tr = 298"},
+        {"Tm", "200", "Tm = 200", "Tr = 298"},
+        {"Tr", "-1", "Tr = -1", "non-negative"}
+    };
+    for (const auto& b : bad)
+    {
+        expectPlasticityError(jc(b[0], b[1]), {"copper", b[2], b[3]});
+    }
+
+    // No strength at any strain
+    std::string noStrength(jc("A", "0"));
+    noStrength.replace(noStrength.find("B 2.92e8"), 8, "B 0");
+    expectPlasticityError(noStrength, {"copper", "A = 0", "B = 0"});
+}
+
+
+TEST(badInput, MieGruneisen)
+{
+    // The MieGruneisen keywords of MATERIALS.md: each one missing, zero or
+    // negative stops with a FatalIOError naming the phase and the entry
+    const std::vector<std::pair<std::string, std::string>> entries
+    {
+        {"rho0", "8930"}, {"c0", "3939"}, {"s", "1.5"}, {"Gamma0", "2"},
+        {"Cv", "383"}, {"T0", "298"}
+    };
+    const auto eosText = [&](const std::string& skip, const std::string& value)
+    {
+        std::string text("equationOfState { type MieGruneisen;");
+        for (const auto& kv : entries)
+        {
+            if (kv.first == skip)
+            {
+                if (!value.empty()) text += " " + kv.first + " " + value + ";";
+            }
+            else
+            {
+                text += " " + kv.first + " " + kv.second + ";";
+            }
+        }
+        return text + " }";
+    };
+    const std::string metal("type metal; rho0 8930; mu 4.4967e10;");
+
+    EXPECT_NO_THROW
+    (
+        hyperelasticPhase("copper", dictFrom(phaseText("solid", metal, eosText("", ""))))
+    );
+    EXPECT_NO_THROW
+    (
+        hyperelasticPhase("water", dictFrom(phaseText("fluid", "", eosText("", ""))))
+    );
+
+    for (const auto& kv : entries)
+    {
+        const std::string& key = kv.first;
+        expectPhaseError
+        (
+            "copper", phaseText("solid", metal, eosText(key, "")),
+            {"copper", "MieGruneisen", "keyword " + key}
+        );
+        for (const char* bad : {"0", "-1"})
+        {
+            expectPhaseError
+            (
+                "copper", phaseText("solid", metal, eosText(key, bad)),
+                {"copper", "equationOfState " + key + " = " + bad, "positive"}
+            );
+        }
+    }
+    // A fluid phase too (no elasticity to stop it first)
+    expectPhaseError
+    (
+        "water", phaseText("fluid", "", eosText("c0", "-1500")),
+        {"water", "equationOfState c0 = -1500"}
+    );
+
+    // Gamma0 >= 2 s: the Hugoniot from rest would reach its limiting
+    // compression 2/Gamma0 before the pole 1/s
+    expectPhaseError
+    (
+        "copper",
+        phaseText
+        (
+            "solid", metal,
+            "equationOfState { type MieGruneisen; rho0 8930; c0 3939; s 1;"
+            " Gamma0 2; Cv 383; T0 298; }"
+        ),
+        {"copper", "equationOfState Gamma0 = 2", "2 s = 2"}
+    );
+
+    // The shear energy's rho0 must be the equation of state's
+    expectPhaseError
+    (
+        "copper",
+        phaseText("solid", "type metal; rho0 8900; mu 4.4967e10;", eosText("", "")),
+        {"copper", "equationOfState rho0 = 8930", "elasticity rho0 = 8900"}
     );
 }

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 #include "stiffenedGas.H"
+#include "primitivesOnly.H"
 #include "unitTestTools.H"
 
 #include <string>
@@ -17,69 +18,6 @@ using namespace unitTestTools;
 
 namespace
 {
-
-//- A model with the primitives of another one only: every relaxation
-//  service and helper it offers is the generic one of equationOfState
-class primitivesOnly
-:
-    public equationOfState
-{
-    const equationOfState& eos_;
-
-public:
-
-    explicit primitivesOnly(const equationOfState& eos)
-    :
-        equationOfState(eos.phaseName(), dictionary()),
-        eos_(eos)
-    {}
-
-    scalar p(const scalar rho, const scalar e) const
-    {
-        return eos_.p(rho, e);
-    }
-
-    scalar e(const scalar rho, const scalar p) const
-    {
-        return eos_.e(rho, p);
-    }
-
-    scalar c2(const scalar rho, const scalar p) const
-    {
-        return eos_.c2(rho, p);
-    }
-
-    scalar Gamma(const scalar rho, const scalar e) const
-    {
-        return eos_.Gamma(rho, e);
-    }
-
-    scalar pMin(const scalar rho) const
-    {
-        return eos_.pMin(rho);
-    }
-
-    scalar rhoMax() const
-    {
-        return eos_.rhoMax();
-    }
-
-    bool hasTemperature() const
-    {
-        return eos_.hasTemperature();
-    }
-
-    scalar T(const scalar rho, const scalar e) const
-    {
-        return eos_.T(rho, e);
-    }
-
-    scalar Cv() const
-    {
-        return eos_.Cv();
-    }
-};
-
 
 autoPtr<equationOfState> eosFrom(const std::string& text)
 {

@@ -23,8 +23,12 @@ Foam::demFaceAssembly::demFaceAssembly
     stamp_(0)
 {
     const label nCells = phases.mesh().nCells();
+    damageIndex_.resize(nPhases_);
+    pFailed_.resize(nPhases_);
     for (label k = 0; k < nPhases_; ++k)
     {
+        damageIndex_[k] = phases[k].damageIndex();
+        pFailed_[k] = phases[k].failure().cavitationPressure();
         dAlpha_[k].resize(nCells);
         dMass_[k].resize(nCells);
         dMomentum_[k].resize(nCells);
@@ -39,6 +43,37 @@ Foam::demFaceAssembly::demFaceAssembly
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::demFaceAssembly::limitFailedTension
+(
+    const label k,
+    const phaseSide& sl,
+    const phaseSide& sr,
+    riemannSolution& sol
+) const
+{
+    const label iD = damageIndex_[k];
+    if
+    (
+        iD < 0
+     || !(
+            failureModel::failed(sl.carried[iD])
+         || failureModel::failed(sr.carried[iD])
+        )
+    )
+    {
+        return;
+    }
+    // Normal traction t*_n = -p* in the face frame
+    const double excess = pFailed_[k] + sol.tStar(0);
+    if (excess > 0)
+    {
+        sol.tStar(0) -= excess;
+        sol.momentumFlux(0) += excess;
+        sol.energyFlux += excess*sol.uStar;
+    }
+}
+
 
 Foam::riemannState Foam::demFaceAssembly::faceFrameState
 (
@@ -145,7 +180,11 @@ void Foam::demFaceAssembly::solveFace
             const riemannState L(faceFrameState(k, sl, R, n));
             const riemannState Rs(faceFrameState(j, sr, R, n));
 
-            const riemannSolution sol = riemann_->solve(L, Rs, k == j);
+            riemannSolution sol = riemann_->solve(L, Rs, k == j);
+            if (k == j)
+            {
+                limitFailedTension(k, sl, sr, sol);
+            }
 
             uFace += S*sol.uStar;
             wFace += S;

@@ -44,14 +44,15 @@ void Foam::phaseModel::readRelaxationPath(const dictionary& dict)
         const Pair<scalar> ref(dict.get<Pair<scalar>>("referenceIsentrope"));
         if
         (
-            !isentropicRelaxation_ || !(ref.first() > 0)
-         || !(ref.second() > eos.pMin(ref.first()))
+            !isentropicRelaxation_
+         || !eos.admissible(ref.first(), ref.second())
         )
         {
             FatalIOErrorInFunction(dict)
                 << "Phase " << name << ": referenceIsentrope " << ref
-                << " needs pressureRelaxation isentropic, rho > 0 and"
-                << " p > " << eos.pMin(ref.first()) << exit(FatalIOError);
+                << " needs pressureRelaxation isentropic, 0 < rho < "
+                << eos.rhoMax() << " and p > " << eos.pMin(ref.first())
+                << exit(FatalIOError);
         }
         isentrope_ =
             Pair<scalar>(ref.first(), eos.e(ref.first(), ref.second()));
@@ -97,15 +98,32 @@ void Foam::phaseModel::checkInitialState() const
     const scalarField& pk = p_->primitiveField();
     forAll(rho, celli)
     {
-        if (!(rho[celli] > 0) || !(pk[celli] > eos.pMin(rho[celli])))
+        if (!eos.admissible(rho[celli], pk[celli]))
         {
             FatalErrorInFunction
                 << "Phase " << name() << " starts in cell " << celli
                 << " with rho = " << rho[celli] << ", p = " << pk[celli]
-                << ": need rho > 0 and p > " << eos.pMin(rho[celli])
-                << exit(FatalError);
+                << ": need 0 < rho < " << eos.rhoMax() << " and p > "
+                << eos.pMin(rho[celli]) << exit(FatalError);
         }
     }
+}
+
+
+bool Foam::phaseModel::readWriteTemperature(const dictionary& dict) const
+{
+    const bool needed = needsTemperature();
+    const bool write =
+        dict.getOrDefault<Switch>("writeTemperature", Switch(needed));
+    if (write && !law_.eos().hasTemperature())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Phase " << name() << ": writeTemperature needs a"
+            << " temperature, and its equationOfState "
+            << law_.eos().type() << " gives none: add Cv to"
+            << " equationOfState" << exit(FatalIOError);
+    }
+    return write;
 }
 
 
@@ -124,6 +142,7 @@ Foam::phaseModel::phaseModel
     index_(index),
     law_(name, dict),
     plastic_(),
+    failure_(),
     isentropicRelaxation_(false),
     isentrope_(-1, 0),
     pCavitation_(-GREAT),
@@ -152,7 +171,8 @@ Foam::phaseModel::phaseModel
         pMixture.mesh()
     ),
     epsilonPIndex_(-1),
-    plasticWorkIndex_(-1)
+    plasticWorkIndex_(-1),
+    damageIndex_(-1)
 {
     const fvMesh& mesh = pMixture.mesh();
     const word timeName(mesh.time().timeName());
@@ -169,14 +189,33 @@ Foam::phaseModel::phaseModel
         noneDict.add("type", "none");
         plastic_ = plasticModel::New(name, noneDict);
     }
-    if (plastic_->needsTemperature() && !law_.eos().hasTemperature())
+    if (law_.solid())
+    {
+        failure_ = failureModel::New(name, dict);
+    }
+    else
+    {
+        if (dict.found("failure"))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Phase " << name << ": failure is for solids only"
+                << exit(FatalIOError);
+        }
+        failure_ = failureModel::New(name, dictionary());
+    }
+    const char* needsT =
+        plastic_->needsTemperature() ? "plasticity"
+      : failure_->needsTemperature() ? "failure"
+      : nullptr;
+    if (needsT && !law_.eos().hasTemperature())
     {
         FatalIOErrorInFunction(dict)
-            << "Phase " << name << ": its plasticity needs a temperature,"
-            << " and its equationOfState " << law_.eos().type()
+            << "Phase " << name << ": its " << needsT << " needs a"
+            << " temperature, and its equationOfState " << law_.eos().type()
             << " gives none: add Cv to equationOfState"
             << exit(FatalIOError);
     }
+    const bool writeT = readWriteTemperature(dict);
 
     IOobject pIO
     (
@@ -194,6 +233,14 @@ Foam::phaseModel::phaseModel
     {
         pIO.readOpt() = IOobject::NO_READ;
         p_.reset(new volScalarField(pIO, pMixture));
+    }
+
+    if (writeT)
+    {
+        temperature_.reset
+        (
+            new phaseTemperature(name, law_.eos(), rho_, p_())
+        );
     }
 
     IOobject AIO
@@ -229,6 +276,7 @@ Foam::phaseModel::phaseModel
     if (law_.solid())
     {
         carriedInfo_.append(plastic_->carriedVariables());
+        carriedInfo_.append(failure_->carriedVariables());
     }
     for
     (
@@ -286,6 +334,7 @@ Foam::phaseModel::phaseModel
     }
     epsilonPIndex_ = carriedIndex("epsilonP");
     plasticWorkIndex_ = carriedIndex("plasticWork");
+    damageIndex_ = carriedIndex("damage");
 
     checkInitialState();
     initCobasis(readA);

@@ -2,6 +2,8 @@
 #include "alphaClosure.H"
 #include "foamEigen.H"
 
+#include <cmath>
+
 using Foam::foamEigen::toTensor;
 
 
@@ -15,6 +17,7 @@ Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
     alpha_(nPhases_),
     trace_(nPhases_),
     isentropic_(nPhases_, false),
+    failed_(nPhases_, false),
     nVacuum_(0),
     err_(),
     nActive_(0),
@@ -40,6 +43,16 @@ Foam::scalar Foam::mechanicalRelaxation::relaxedVolume
           ? eos.dvIsentropicdp(pStar, s0.first(), s0.second())
           : 0;
         return eos.vIsentropic(max(pStar, pc), s0.first(), s0.second());
+    }
+    if (failed_[k])
+    {
+        // Failed material holds no tension below its cavitation pressure
+        const scalar pc = phases_[k].failure().cavitationPressure();
+        if (pStar < pc)
+        {
+            dvdp = 0;
+            return eos.vRelaxed(pc, 1/v0_[k], eh0_[k]);
+        }
     }
     dvdp = eos.dvRelaxeddp(pStar, 1/v0_[k], eh0_[k]);
     return eos.vRelaxed(pStar, 1/v0_[k], eh0_[k]);
@@ -79,7 +92,10 @@ bool Foam::mechanicalRelaxation::interfacePressure
             isentropic_[k]
           ? eos.pIsentropicMin(s0.first(), s0.second())
           : eos.pRelaxedMin(1/v0_[k], eh0_[k]);
-        if (!(isentropic_[k] && phases_.cavitationPressure(k) > pPath))
+        const bool held =
+            (isentropic_[k] && phases_.cavitationPressure(k) > pPath)
+         || (failed_[k] && phases_[k].failure().cavitationPressure() > pPath);
+        if (!held)
         {
             // v_k(p) grows without bound as p -> pPath
             lo = max(lo, pPath);
@@ -131,7 +147,17 @@ bool Foam::mechanicalRelaxation::interfacePressure
               ? 0.5*(lo + hi)
               : p + 2*max(mag(p - lo), scalar(1));
         }
-        if (mag(pNew - p) <= 1e-15*(mag(pNew) + pScale))
+        // Converged in p, and in the volume unless p is resolved to
+        // round-off: a nearly empty gas next to failed or cavitating
+        // material takes its volume at p* near 0, where a pressure
+        // tolerance relative to the metal's scale would leave the volume
+        // wrong by percent (and the closing of the volumes would hand
+        // that to the metal as a tension of GPa)
+        if
+        (
+            mag(pNew - p) <= 1e-15*(mag(pNew) + pScale)
+         && (mag(f) <= 1e-12*volume || mag(pNew - p) <= 1e-15*mag(pNew))
+        )
         {
             p = pNew;
             return true;
@@ -409,6 +435,13 @@ void Foam::mechanicalRelaxation::screenEnergies
     {
         if (trace_[k]) continue;
         const equationOfState& eos = phases_.phase(k).eos();
+        if (!(1/v0_[k] < eos.rhoMax()))
+        {
+            // Beyond the highest density of the equation of state (the
+            // pole of a Mie-Grueneisen Hugoniot) there is no pressure
+            fail(c, k, "rho>=rhoMax", 1/v0_[k]);
+            continue;
+        }
         const scalar pk = eos.p(1/v0_[k], eh0_[k]);
         if (!(pk > eos.pMin(1/v0_[k])))
         {
@@ -480,6 +513,13 @@ void Foam::mechanicalRelaxation::relaxTraces
         if (!trace_[k]) continue;
         const hyperelasticPhase& ph = phases_.phase(k);
         const scalar rho = 1/v0_[k];
+        if (!(rho < ph.eos().rhoMax()))
+        {
+            // A trace squeezed beyond the highest density of its equation
+            // of state has no state to be reset to
+            fail(c, k, "rho>=rhoMax", rho);
+            continue;
+        }
         scalar pk = max(pStar, ph.eos().pMin(rho) + 1);
         const scalar eeOld = ph.elasticEnergy(q.A[k][c]);
         if (ph.solid())
@@ -517,24 +557,30 @@ bool Foam::mechanicalRelaxation::relaxPlastic
         {
             phase.carried(i)[c] = q.carried[k][i][c];
         }
-        if (ph.solid() && !trace_[k])
+        if (ph.solid() && !trace_[k] && !failed_[k])
         {
-            // The temperature before the step, for a flow stress that
-            // depends on it (the phase model made sure the equation of
-            // state has one)
+            // The temperature before the step, for a flow stress or a
+            // damage that depends on it (the phase model made sure the
+            // equation of state has one)
             const plasticModel& plastic = phase.plastic();
-            const scalar T =
+            const bool needsT =
                 plastic.needsTemperature()
-              ? ph.eos().T(1/v0_[k], eh0_[k])
-              : 0;
+             || phase.failure().needsTemperature();
+            const scalar T = needsT ? ph.eos().T(1/v0_[k], eh0_[k]) : 0;
+            scalar& epsP = phase.carried(phase.epsilonPIndex())[c];
+            const scalar epsPOld = epsP;
             const scalar heat = plastic.correct
             (
-                q.A[k][c], phase.carried(phase.epsilonPIndex())[c],
-                ph.elastic(), dt, T
+                q.A[k][c], epsP, ph.elastic(), dt, T
             );
             eh0_[k] += heat;
             phase.carried(phase.plasticWorkIndex())[c] += heat;
             heated = heated || heat > 0;
+            if (phase.damageIndex() >= 0)
+            {
+                updateDamage(c, q, k, epsP - epsPOld, dt, T);
+                heated = heated || failed_[k];
+            }
         }
     }
     return heated;
@@ -550,6 +596,7 @@ void Foam::mechanicalRelaxation::vacuumAfterRelaxation()
         (
             phases_.pVacuum() >= 0 && !trace_[k]
          && !phases_.phase(k).solid()
+         && 1/v0_[k] < eos.rhoMax()
          && !(eos.p(1/v0_[k], eh0_[k]) > eos.pMin(1/v0_[k]))
         )
         {
@@ -573,12 +620,24 @@ void Foam::mechanicalRelaxation::checkAndStore
         const cobasis::matrix& A = q.A[k][c];
 
         const scalar rho = 1/v0_[k];
-        const scalar p = ph.eos().p(rho, eh0_[k]);
+
+        // No pressure outside the density range (a Mie-Grueneisen phase
+        // beyond rhoMax gives NaN, and comparing a NaN traps under
+        // FOAM_SIGFPE): the phase fails on rho and keeps its last
+        // pressure (the step is retried or stopped). A trace there has
+        // already failed (relaxTraces)
+        const bool inRange = rho > 0 && rho < ph.eos().rhoMax();
+        const scalar p =
+            inRange ? ph.eos().p(rho, eh0_[k]) : phases_.p(k)[c];
 
         if (!trace_[k])
         {
             if (!(rho > 0)) fail(c, k, "rho", rho);
-            if (!(p > ph.eos().pMin(rho))) fail(c, k, "p", p);
+            if (!(rho < ph.eos().rhoMax())) fail(c, k, "rho>=rhoMax", rho);
+            if (inRange && !(std::isfinite(p) && p > ph.eos().pMin(rho)))
+            {
+                fail(c, k, "p", p);
+            }
             if (!(alpha_[k] <= 1)) fail(c, k, "alpha", alpha_[k]);
             if (ph.solid() && !(A.determinant() > 0))
             {
@@ -625,6 +684,10 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
         {
             continue;
         }
+
+        // Failed material: no shear stress; in tension, the fluids of the
+        // cell take part in the pressure relaxation
+        relaxFailed(c, q);
 
         // 3. Pressure relaxation among the phases that are not traces
         scalar pStar;

@@ -133,8 +133,13 @@ Foam::scalar Foam::equationOfState::vRelaxed
         scalar rhoNew = rho - h/dh;
         if (!(rhoNew > rhoLo && rhoNew < rhoHi))
         {
-            // Bisect, or expand while no upper bound is known
-            rhoNew = rhoHi < rhoMax() ? 0.5*(rhoLo + rhoHi) : 4*rho;
+            // Bisect, or expand while no upper bound is known: fourfold,
+            // but never beyond the admissible range (halfway to rhoMax
+            // at most, where the model has a finite one: MieGruneisen)
+            rhoNew =
+                rhoHi < rhoMax()
+              ? 0.5*(rhoLo + rhoHi)
+              : min(4*rho, 0.5*(rho + rhoMax()));
         }
         // Quadratic convergence: a step below tolerance leaves an error
         // far below round-off
@@ -235,7 +240,10 @@ Foam::scalar Foam::equationOfState::pRelaxedMin
                 return false;
             }
             q += dq;
-            if (mag(dq) <= tolerance*s)
+            // Relative to |q| as well: q grows far beyond the start's
+            // scale on a long expansion (a Mie-Grueneisen solid holds any
+            // tension, q ~ -rho0^2 c0^2 v/2), and its round-off with it
+            if (mag(dq) <= tolerance*(s + mag(q)))
             {
                 return
                     rho < rhoMax() && q > pMin(rho) && c2(rho, q) > 0;

@@ -29,6 +29,20 @@ Foam::hyperelasticPhase::hyperelasticPhase
     if (solid_)
     {
         elastic_ = elasticModel::New(name, dict.subDict("elasticity"));
+
+        // An equation of state with its own reference density
+        // (MieGruneisen) and the shear energy describe one unstrained
+        // state: their rho0 must agree (docs/model.md section 10.1)
+        const scalar rho0Eos = eos_->referenceDensity();
+        const scalar rho0El = elastic_->rho0();
+        if (rho0Eos > 0 && mag(rho0Eos - rho0El) > 1e-12*rho0El)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Phase " << name << ": equationOfState rho0 = " << rho0Eos
+                << " and elasticity rho0 = " << rho0El << " differ; both"
+                << " describe the unstrained state at rest and must be"
+                << " equal" << exit(FatalIOError);
+        }
     }
     else if (dict.found("elasticity"))
     {

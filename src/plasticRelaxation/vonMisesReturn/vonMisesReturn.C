@@ -114,15 +114,30 @@ Foam::vonMisesReturn::result Foam::vonMisesReturn::correct
         return {0, 0};
     }
 
+    // f(0) = sqrt(3/2)|S(I)| - sigmaY(epsP + dEpsP(0), ...): the flow
+    // stress at the largest plastic increment. f(0) >= 0 is a phase with
+    // no strength (sigmaY = 0 along the whole path, e.g. Johnson-Cook at
+    // or above melting): the stress goes to zero, s = 0
+    const scalar fAt0 = fOfs(0);
+    const bool noStrength = !(fAt0 < 0);
+
     // The flow stress of the state before the step: the scale of the
-    // tolerance and of the visco-plastic rate
-    const scalar sigmaY = law.sigmaY(epsP, 0, T);
+    // tolerance and of the visco-plastic rate. Where it is 0 (a law with
+    // no initial yield stress, Johnson-Cook with A = 0 at epsP = 0) the
+    // flow stress at the largest plastic increment, -f(0) > 0, takes its
+    // place (and 0 stays 0 for a phase with no strength)
+    scalar sigmaY = law.sigmaY(epsP, 0, T);
+    if (!(sigmaY > 0) && !noStrength)
+    {
+        sigmaY = max(-fAt0, scalar(0));
+    }
 
     // Ideal return: the point of the path on the yield surface
     const scalar tol = 1e-13*sigmaY;
     scalar s = 0, s0 = 0, s1 = 1;
     const bool converged =
-        increasingRoot(fOfs, s, s0, s1, fOfs(0), f1, tol, 4*SMALL);
+        noStrength
+     || increasingRoot(fOfs, s, s0, s1, fAt0, f1, tol, 4*SMALL);
 
     // The plastic fraction of the log-strain
     scalar q = 1 - s;
@@ -164,14 +179,18 @@ Foam::vonMisesReturn::result Foam::vonMisesReturn::correct
         }
     }
 
-    if (tau_ > 0)
+    // With no strength the visco-plastic rate (f/sigmaY)^n/tau is
+    // unbounded for n > 0: the return is instantaneous (s = 0, the limit
+    // as sigmaY goes to 0); for n = 0 it is 1/tau, as for any strength
+    if (tau_ > 0 && !(noStrength && n_ > 0))
     {
         // Visco-plastic: backward Euler of ds/dt = -s/tau(f), s >= sY
         const scalar sY = s;
         const auto phi = [&](const scalar t)
         {
             const scalar ft = max(fOfs(t), scalar(0));
-            const scalar relaxRate = pow(ft/sigmaY, n_)/tau_;
+            const scalar relaxRate =
+                (n_ > 0 ? pow(ft/sigmaY, n_) : scalar(1))/tau_;
             return t*(1 + dt*(ft > 0 ? relaxRate : 0)) - 1;
         };
         const scalar phiY = phi(sY);

@@ -440,7 +440,7 @@ void Foam::reconstructions::MUSCLHancock::faceState
 
         if
         (
-            !(sk.rho > 0) || !(sk.p > ph.eos().pMin(sk.rho))
+            !ph.eos().admissible(sk.rho, sk.p)
          || (ph.solid() && !(sk.A.determinant() > 0))
         )
         {
@@ -494,7 +494,7 @@ void Foam::reconstructions::MUSCLHancock::centreState
         const hyperelasticPhase& ph = phases_.phase(k);
         if
         (
-            rho > 0 && p > ph.eos().pMin(rho)
+            ph.eos().admissible(rho, p)
          && (!ph.solid() || A.determinant() > 0)
         )
         {

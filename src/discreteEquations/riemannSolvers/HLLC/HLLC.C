@@ -95,10 +95,18 @@ Foam::riemannSolution Foam::riemannSolvers::HLLC::solve
         const double pL = -L.s(0), pR = -R.s(0);
         const double pStar =
             (ZR*pL + ZL*pR + ZL*ZR*(uL - uR))/guard(ZL + ZR);
+        // Where the fundamental derivative is negative (Mie-Grueneisen
+        // below its reference curve in tension) a compression is no shock
+        // and its fastest speed is the side's own: q = 1, and the root
+        // stays real
         const double qL =
-            pStar > pL ? std::sqrt(1 + L.G*(pStar - pL)/guard(ZL*L.a)) : 1;
+            pStar > pL
+          ? std::sqrt(1 + std::max(L.G, 0.0)*(pStar - pL)/guard(ZL*L.a))
+          : 1;
         const double qR =
-            pStar > pR ? std::sqrt(1 + R.G*(pStar - pR)/guard(ZR*R.a)) : 1;
+            pStar > pR
+          ? std::sqrt(1 + std::max(R.G, 0.0)*(pStar - pR)/guard(ZR*R.a))
+          : 1;
         SL = uL - qL*L.a;
         SR = uR + qR*R.a;
     }

@@ -1,0 +1,140 @@
+#include "mechanicalRelaxation.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::mechanicalRelaxation::removeShear
+(
+    const label c,
+    conservedState& q,
+    const label k
+)
+{
+    const hyperelasticPhase& ph = phases_.phase(k);
+    cobasis::matrix& A = q.A[k][c];
+    const scalar shearEnergy = ph.elasticEnergy(A);
+    A = cobasis::unstrained(1/v0_[k], ph.rho0());
+    eh0_[k] += shearEnergy;
+}
+
+
+void Foam::mechanicalRelaxation::relaxFailed
+(
+    const label c,
+    conservedState& q
+)
+{
+    bool open = false;
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        const phaseModel& phase = phases_[k];
+        const label iD = phase.damageIndex();
+        failed_[k] = false;
+        if (iD < 0)
+        {
+            continue;
+        }
+
+        // Failed before the step, or now beyond the tensile cutoff (the
+        // cutoff acts within the step that reaches it, and on a cell whose
+        // damage the transport mixed below 1)
+        const failureModel& failure = phase.failure();
+        scalar& D = q.carried[k][iD][c];
+        const scalar pk = phase.eos().p(1/v0_[k], eh0_[k]);
+        failed_[k] =
+            failureModel::failed(D)
+         || (failure.sigmaSpall() > 0 && pk < -failure.sigmaSpall());
+        if (!failed_[k])
+        {
+            continue;
+        }
+        D = 1;
+
+        // No deviatoric stress: the shear energy becomes heat
+        removeShear(c, q, k);
+
+        // In tension (the whole solid, or a trace of it next to a fluid)
+        // it opens up: the fluids of the cell take the volume
+        open = open || pk < failure.cavitationPressure();
+    }
+    if (!open)
+    {
+        return;
+    }
+
+    // Every fluid with mass takes part; a failed solid that is only a
+    // trace stays one. A fluid the step left at the edge of its range (a
+    // gas torn open in the gap) is floored first (pVacuum), or else stays
+    // a trace
+    bool fluid = false;
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if (phases_.phase(k).solid() || !(m_[k] > 0) || !trace_[k])
+        {
+            fluid = fluid || (!phases_.phase(k).solid() && !trace_[k]);
+            continue;
+        }
+        const equationOfState& eos = phases_.phase(k).eos();
+        const scalar rho = 1/v0_[k];
+        if (!(eos.p(rho, eh0_[k]) > eos.pMin(rho)))
+        {
+            if (phases_.pVacuum() < 0)
+            {
+                continue;
+            }
+            trace_[k] = false;
+            vacuumFloor(k);
+        }
+        trace_[k] = false;
+        fluid = true;
+    }
+    if (!fluid)
+    {
+        // Nothing can take the volume: the failed material keeps its
+        // tension (a case without a fluid phase)
+        for (label k = 0; k < nPhases_; ++k)
+        {
+            failed_[k] = false;
+        }
+    }
+}
+
+
+void Foam::mechanicalRelaxation::updateDamage
+(
+    const label c,
+    conservedState& q,
+    const label k,
+    const scalar dEpsP,
+    const scalar dt,
+    const scalar T
+)
+{
+    phaseModel& phase = phases_[k];
+    const failureModel& failure = phase.failure();
+    scalar& D = phase.carried(phase.damageIndex())[c];
+
+    const scalar rho = 1/v0_[k];
+    const scalar p = phase.eos().p(rho, eh0_[k]);
+    const scalar epsPDot = dt > 0 ? dEpsP/dt : 0;
+
+    // On the yield surface after a plastic step, the Von Mises stress is
+    // the flow stress
+    const scalar sigmaEq =
+        dEpsP > 0
+      ? phase.plastic().sigmaY
+        (
+            phase.carried(phase.epsilonPIndex())[c], epsPDot, T
+        )
+      : 0;
+
+    D = failure.damage(D, dEpsP, epsPDot, p, sigmaEq, T);
+    if (failureModel::failed(D))
+    {
+        D = 1;
+        removeShear(c, q, k);
+        failed_[k] = true;
+    }
+}
+
+
+// ************************************************************************* //

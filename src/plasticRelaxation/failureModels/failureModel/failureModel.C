@@ -1,0 +1,104 @@
+#include "failureModel.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(failureModel, 0);
+    defineRunTimeSelectionTable(failureModel, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::failureModel::failureModel
+(
+    const word& phaseName,
+    const dictionary& dict
+)
+:
+    phaseName_(phaseName),
+    sigmaSpall_(0),
+    pCavitation_(dict.getOrDefault<scalar>("cavitationPressure", 0))
+{
+    if (dict.found("sigmaSpall"))
+    {
+        sigmaSpall_ = dict.get<scalar>("sigmaSpall");
+        if (!(sigmaSpall_ > 0))
+        {
+            badEntry(dict, "sigmaSpall", sigmaSpall_, "> 0");
+        }
+    }
+    if (!(pCavitation_ > -GREAT && pCavitation_ < GREAT))
+    {
+        badEntry(dict, "cavitationPressure", pCavitation_, "finite");
+    }
+}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::failureModel::read
+(
+    const dictionary& dict,
+    const word& name
+) const
+{
+    if (!dict.found(name))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Phase " << phaseName_ << ": failure "
+            << dict.getOrDefault<word>("type", "") << " needs the entry "
+            << name << exit(FatalIOError);
+    }
+    return dict.get<scalar>(name);
+}
+
+
+void Foam::failureModel::badEntry
+(
+    const dictionary& dict,
+    const word& name,
+    const scalar value,
+    const char* what
+) const
+{
+    FatalIOErrorInFunction(dict)
+        << "Phase " << phaseName_ << ": failure "
+        << dict.getOrDefault<word>("type", "") << " entry " << name
+        << " = " << value << ", must be " << what << exit(FatalIOError);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::carriedVariableList Foam::failureModel::carriedVariables() const
+{
+    carriedVariableList vars;
+    if (active())
+    {
+        vars.append(carriedVariable("damage", dimless, 0, 0, 1));
+    }
+    return vars;
+}
+
+
+Foam::scalar Foam::failureModel::damage
+(
+    const scalar D,
+    const scalar dEpsP,
+    const scalar epsPDot,
+    const scalar p,
+    const scalar sigmaEq,
+    const scalar T
+) const
+{
+    if (failed(D) || (sigmaSpall_ > 0 && p < -sigmaSpall_))
+    {
+        return 1;
+    }
+    const scalar dD =
+        dEpsP > 0 ? damageIncrement(dEpsP, epsPDot, p, sigmaEq, T) : 0;
+    return min(D + dD, scalar(1));
+}
+
+
+// ************************************************************************* //
