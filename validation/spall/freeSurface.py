@@ -3,8 +3,10 @@
 estimate (docs/validation.md V12).
 
 Reads every time directory of a 1-D case along x (the spallPlate tutorial):
-the free surface is the last cell, from the right, whose volume fraction
-of the phase exceeds 1/2; its velocity U_x is the free-surface velocity.
+the free-surface velocity is the mass-weighted velocity U_x of the
+outermost 0.1 mm of the phase (its mass at rho0, counted from the right:
+the diffuse interface spans a few cells, and the outermost, nearly empty
+ones lag behind the surface).
 Writes the history (t [s], u [m/s]) and prints the pull-back estimate:
 u rises to its first plateau u_peak; after spall it falls to the first
 minimum u_min of the pull-back signal; dU = u_peak - u_min, and the
@@ -24,21 +26,32 @@ sys.path.insert(0, os.path.join(HERE, "..", "..", "tests", "lib"))
 import foamcase as fc   # noqa: E402
 
 
-def history(case, phase):
-    """Times and free-surface velocities of every time directory but 0."""
+def history(case, phase, rho0=8930.0, layer=1e-4):
+    """Times and free-surface velocities of every time directory but 0:
+    the mass-weighted velocity of the outermost layer of the phase (the
+    mass of `layer` metres at rho0; the diffuse interface spans a few
+    cells, whose outermost, nearly empty ones lag behind the surface)."""
     x = fc.cell_centres(case)[:, 0]
     order = np.argsort(x)
+    xs = x[order]
+    dx = np.gradient(xs)
     ts, us = [], []
     for t, name in fc.time_dirs(case):
         if t <= 0:
             continue
         alpha = fc.read_field(case, name, "alpha." + phase)[order]
+        rho = fc.read_field(case, name, "rho." + phase)[order]
         U = fc.read_field(case, name, "U")[order, 0]
-        inside = np.nonzero(alpha > 0.5)[0]
-        if len(inside) == 0:
+        # The surface layer: the outermost copper holding the mass of a
+        # layer `layer` thick at rho0, from the right
+        m = alpha*rho*dx
+        cum = np.cumsum(m[::-1])
+        n = np.searchsorted(cum, rho0*layer) + 1
+        if cum[-1] < rho0*layer:
             continue
+        mm, uu = m[::-1][:n], U[::-1][:n]
         ts.append(t)
-        us.append(U[inside[-1]])
+        us.append(np.sum(mm*uu)/np.sum(mm))
     return np.array(ts), np.array(us)
 
 
@@ -76,7 +89,7 @@ def main():
     ap.add_argument("--output", default="freeSurfaceVelocity.dat")
     args = ap.parse_args()
 
-    t, u = history(args.case, args.phase)
+    t, u = history(args.case, args.phase, args.rho0)
     out = os.path.join(args.case, args.output)
     np.savetxt(out, np.column_stack([t, u]), header="t [s]  u [m/s]")
     print("Free-surface velocity history: %s (%d times)" % (out, len(t)))
