@@ -1,4 +1,5 @@
 #include "phaseSystem.H"
+#include "phaseMaterial.H"
 #include "alphaClosure.H"
 #include "foamEigen.H"
 #include "polyPatch.H"
@@ -209,13 +210,18 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
                 << " sub-dictionary in " << dict_.objectPath()
                 << exit(FatalIOError);
         }
+        // The phase's dictionary with its `material <name>;` resolved
+        // (phaseMaterial.H: the library entry, the phase's keywords on top)
+        const dictionary phaseDict
+        (
+            phaseMaterial::phaseDict(name, dict_.subDict(name), mesh.time())
+        );
         phases_.set
         (
             k,
             new phaseModel
             (
-                k, name, dict_.subDict(name), pMixture_,
-                derivedTypes, mirrorTypes
+                k, name, phaseDict, pMixture_, derivedTypes, mirrorTypes
             )
         );
     }
