@@ -60,6 +60,8 @@ import foamcase as fc                         # noqa: E402
 from checks import Checks                     # noqa: E402
 import plots                                  # noqa: E402
 import elasticPlasticHugoniot as eph          # noqa: E402
+sys.path.insert(0, HERE)
+from test_V5_plateImpact import crossing      # noqa: E402
 
 CASE = os.path.join(HERE, "piston")
 NAME = "V11_piston"
@@ -80,19 +82,6 @@ TOL_YIELD = 1e-6
 
 checks = Checks()
 
-
-def crossing(x, s, level, start, step):
-    """Linearly interpolated position where s crosses level, scanning from
-    index start in direction step (+1/-1); None if it never does."""
-    i = start
-    n = x.size
-    while 0 <= i + step < n:
-        j = i + step
-        if (s[i] - level) * (s[j] - level) <= 0 and s[i] != s[j]:
-            f = (level - s[i]) / (s[j] - s[i])
-            return x[i] + f * (x[j] - x[i])
-        i = j
-    return None
 
 
 def check_plateau(tag, windows, fields, exact, u_scale):

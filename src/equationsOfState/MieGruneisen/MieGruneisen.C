@@ -154,12 +154,11 @@ Foam::scalar Foam::equationsOfState::MieGruneisen::pRef
     const scalar rho
 ) const
 {
-    if (!(rho > 0 && rho < rhoMax_))
+    scalar pr, er;
+    if (!referenceAt(rho, pr, er))
     {
         return NaN;
     }
-    scalar pr, er;
-    reference(eta(rho), pr, er);
     return pr;
 }
 
@@ -169,12 +168,11 @@ Foam::scalar Foam::equationsOfState::MieGruneisen::eRef
     const scalar rho
 ) const
 {
-    if (!(rho > 0 && rho < rhoMax_))
+    scalar pr, er;
+    if (!referenceAt(rho, pr, er))
     {
         return NaN;
     }
-    scalar pr, er;
-    reference(eta(rho), pr, er);
     return er;
 }
 
@@ -185,12 +183,11 @@ Foam::scalar Foam::equationsOfState::MieGruneisen::p
     const scalar e
 ) const
 {
-    if (!(rho > 0 && rho < rhoMax_))
+    scalar pr, er;
+    if (!referenceAt(rho, pr, er))
     {
         return NaN;
     }
-    scalar pr, er;
-    reference(eta(rho), pr, er);
     return pr + rhoGamma_*(e - er);
 }
 
@@ -201,12 +198,11 @@ Foam::scalar Foam::equationsOfState::MieGruneisen::e
     const scalar p
 ) const
 {
-    if (!(rho > 0 && rho < rhoMax_))
+    scalar pr, er;
+    if (!referenceAt(rho, pr, er))
     {
         return NaN;
     }
-    scalar pr, er;
-    reference(eta(rho), pr, er);
     return er + (p - pr)/rhoGamma_;
 }
 
@@ -217,7 +213,7 @@ Foam::scalar Foam::equationsOfState::MieGruneisen::c2
     const scalar p
 ) const
 {
-    if (!(rho > 0 && rho < rhoMax_))
+    if (!admissible(rho))
     {
         return NaN;
     }
@@ -230,7 +226,7 @@ Foam::scalar Foam::equationsOfState::MieGruneisen::pMin
     const scalar rho
 ) const
 {
-    if (!(rho > 0 && rho < rhoMax_))
+    if (!admissible(rho))
     {
         return std::numeric_limits<scalar>::infinity();
     }
@@ -266,13 +262,12 @@ Foam::scalar Foam::equationsOfState::MieGruneisen::pScale
     const scalar p
 ) const
 {
-    if (!(rho > 0 && rho < rhoMax_))
+    scalar pr, er;
+    if (!referenceAt(rho, pr, er))
     {
         return NaN;
     }
     const scalar x = eta(rho);
-    scalar pr, er;
-    reference(x, pr, er);
     const scalar eh = er + (p - pr)/rhoGamma_;
 
     // d p_ref/d eta and d e_ref/d eta
