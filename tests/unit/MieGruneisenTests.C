@@ -75,22 +75,6 @@ std::vector<scalar> pressuresAt(const equationOfState& eos, const scalar rho)
     return ps;
 }
 
-::testing::AssertionResult relClose
-(
-    const scalar a,
-    const scalar b,
-    const scalar tol
-)
-{
-    if (mag(a - b) <= tol*mag(b))
-    {
-        return ::testing::AssertionSuccess();
-    }
-    return
-        ::testing::AssertionFailure()
-        << a << " vs " << b << ": relative difference "
-        << mag(a - b)/mag(b) << " > " << tol;
-}
 
 
 //- Counts the evaluations of p that the generic services make

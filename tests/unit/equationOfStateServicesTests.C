@@ -76,23 +76,6 @@ std::vector<scalar> pStars(const equationOfState& eos, const scalar pOld)
 }
 
 
-//- |a - b| <= tol |b|, with a message
-::testing::AssertionResult relClose
-(
-    const scalar a,
-    const scalar b,
-    const scalar tol
-)
-{
-    if (mag(a - b) <= tol*mag(b))
-    {
-        return ::testing::AssertionSuccess();
-    }
-    return
-        ::testing::AssertionFailure()
-        << a << " vs " << b << ": relative difference "
-        << mag(a - b)/mag(b) << " > " << tol;
-}
 
 const scalar tol = 1e-12;
 
