@@ -42,12 +42,19 @@ latest one, and holds finite fields with rho > 0 and p > -pInf for every
 phase):
     copperLeavesAir   the copper slab moves away from the air at 5000 m/s
                       (faster than the air's escape speed 2c/(gamma - 1)
-                      = 1710 m/s): the gap is a vacuum and the air's
+                      = 1710 m/s) with the vacuum floor switched off
+                      (pVacuum -1): the gap is a vacuum and the air's
                       pressure goes negative.
     separation        copper at -5000 m/s, air at +5000 m/s, traces 1e-6
                       (at the default trace threshold alphaTrace 1e-6, so
-                      both phases stay active in every cell).
-A run that must complete (it stopped before a fix):
+                      both phases stay active in every cell), vacuum floor
+                      off.
+Runs that must complete (they stopped before a fix):
+    vacuum            copperLeavesAir with the default settings: the air
+                      torn open behind the copper takes the vacuum floor
+                      (pVacuum, default 1 Pa); the run completes with finite
+                      fields, the air's pressure at or above the floor and
+                      the log reporting the floored cells.
     mieGruneisenRebound
                       copper as Mie-Grueneisen (MATERIALS.md, rho0 8900)
                       and the air at -3000 m/s onto a slip wall (the left
@@ -240,12 +247,49 @@ def mie_gruneisen(case):
 
 # name: (modifications before setFields, description, patterns the
 # message must hold besides the common ones)
+def vacuum_off(case):
+    """The vacuum floor switched off: a torn gas stops the run."""
+    edit(case, PP, "phases (copper air);", "phases (copper air);\npVacuum -1;")
+
+
 UNPHYSICAL = [
-    ("copperLeavesAir", [set_velocities(-5000.0, 0.0)],
-     "copper at -5000 m/s leaving air at rest", []),
-    ("separation", [set_velocities(-5000.0, 5000.0), traces(1e-6)],
-     "copper at -5000 m/s, air at +5000 m/s, traces 1e-6", []),
+    ("copperLeavesAir", [set_velocities(-5000.0, 0.0), vacuum_off],
+     "copper at -5000 m/s leaving air at rest (pVacuum -1)", []),
+    ("separation", [set_velocities(-5000.0, 5000.0), traces(1e-6),
+                    vacuum_off],
+     "copper at -5000 m/s, air at +5000 m/s, traces 1e-6 (pVacuum -1)", []),
 ]
+
+
+def check_vacuum():
+    """copperLeavesAir with the default vacuum floor: completes, the torn
+    air floored at 1 Pa (reported in the log), finite fields."""
+    tag = "V9_vacuumFloorByDefault"
+    try:
+        case = prepare("vacuum", [set_velocities(-5000.0, 0.0)])
+    except (fc.FoamError, OSError) as e:
+        checks.fail(tag, "could not set up the case: %s"
+                    % getattr(e, "summary", e))
+        return
+    code, log = run_impactfoam(case)
+    if code != 0:
+        checks.fail(tag, "exit code %s: %s" % (code, one_line(
+            fatal_message(log) or log[-400:])))
+        return
+    floored = re.findall(r"vacuum floor \(pVacuum\) in (\d+) cells", log)
+    t = fc.latest_time(case)
+    fields = [fc.read_field(case, t, f) for f in
+              ("alpha.air", "rho.air", "p.air", "p.copper", "U")]
+    finite = all(np.all(np.isfinite(f)) for f in fields)
+    a, rho, p = fields[0], fields[1], fields[2]
+    m = a > 1e-6
+    checks.check(tag, finite and len(floored) > 0 and p[m].min() > 0.5
+                 and rho[m].min() > 0,
+                 "t = %s: fields finite %s; floor reported in %d steps (up "
+                 "to %s cells); air (alpha > 1e-6) p >= %.4g Pa, rho >= "
+                 "%.3g" % (t, finite, len(floored),
+                           max([int(n) for n in floored] or [0]),
+                           p[m].min(), rho[m].min()))
 
 
 def check_rebound():
@@ -503,6 +547,7 @@ def main():
     for name, modifications, what, patterns in UNPHYSICAL:
         check_unphysical(name, modifications, what, patterns)
     check_rebound()
+    check_vacuum()
     checks.exit()
 
 

@@ -21,7 +21,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 "..", "lib"))
-from exactRiemann import RiemannProblem, VacuumError  # noqa: E402
+from exactRiemann import RiemannProblem, VacuumError, VacuumProblem  # noqa: E402,E501
 
 failures = 0
 
@@ -75,6 +75,35 @@ try:
 except VacuumError as e:
     check("ideal_vacuum_detected", True, "VacuumError raised (%s)" % e)
 
+
+# Vacuum generation (Toro 4.6): the fans of VacuumProblem are continuous at
+# their heads, end at the escape fronts with rho = p = 0, keep the Riemann
+# invariant u + 2c/(g - 1) (left) and the isentrope p/rho^g of their side
+vp = VacuumProblem((1.0, -20.0, 0.4, 1.4, 0.0), (0.5, 18.0, 0.3, 1.4, 0.0))
+L_, R_ = vp.L, vp.R
+xi_l = np.linspace(L_.u - L_.c, vp.front_L, 50)[1:-1]
+xi_r = np.linspace(vp.front_R, R_.u + R_.c, 50)[1:-1]
+rl, ul, pl, _ = vp.sample(xi_l)
+rr, ur, pr, _ = vp.sample(xi_r)
+cl, cr = np.sqrt(1.4 * pl / rl), np.sqrt(1.4 * pr / rr)
+errs = [
+    np.max(np.abs(ul + 5 * cl - (L_.u + 5 * L_.c))) / L_.c,
+    np.max(np.abs(ur - 5 * cr - (R_.u - 5 * R_.c))) / R_.c,
+    np.max(np.abs(pl / rl**1.4 - L_.p / L_.rho**1.4)) / (L_.p / L_.rho**1.4),
+    np.max(np.abs(pr / rr**1.4 - R_.p / R_.rho**1.4)) / (R_.p / R_.rho**1.4),
+    np.max(np.abs(ul - cl - xi_l)) / L_.c,
+    np.max(np.abs(ur + cr - xi_r)) / R_.c,
+]
+head_l = vp.sample(L_.u - L_.c + 1e-9)
+edge = vp.sample(vp.front_L - 1e-9)
+inside = vp.sample(0.5 * (vp.front_L + vp.front_R))
+check("ideal_vacuum_fans", max(errs) < 1e-12
+      and abs(head_l[0] - L_.rho) < 1e-8 and edge[0] < 1e-12
+      and inside[0] == 0 and inside[2] == 0,
+      "invariants, isentropes and characteristic speeds in both fans: max "
+      "rel error %.2e; rho at the left head %.9g (%.9g), at its escape front "
+      "%.2e; vacuum between fronts %.4g and %.4g"
+      % (max(errs), head_l[0], L_.rho, edge[0], vp.front_L, vp.front_R))
 
 # --------------------------------------------------------------------------
 # 2. Stiffened gases: Rankine-Hugoniot, Riemann invariants, conservation

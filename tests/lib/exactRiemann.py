@@ -243,6 +243,52 @@ class RiemannProblem(object):
         return "\n".join(lines)
 
 
+class VacuumProblem(RiemannProblem):
+    """Two rarefactions moving apart faster than the escape speeds,
+    u_R - u_L >= 2 c_L/(gamma_L - 1) + 2 c_R/(gamma_R - 1): a vacuum
+    opens between them (Toro, ch. 4.6). Each fan ends at its escape front,
+    u_L + 2 c_L/(gamma_L - 1) on the left, u_R - 2 c_R/(gamma_R - 1) on
+    the right, with rho = 0 and p = -pInf; between the fronts rho = 0,
+    p = -pInf of the nearer side and u is undefined (NaN). Same sampling
+    interface as RiemannProblem."""
+
+    def __init__(self, left, right):
+        self.L = _side(left)
+        self.R = _side(right)
+        L, R = self.L, self.R
+        self.front_L = L.u + 2.0 * L.c / (L.gamma - 1.0)
+        self.front_R = R.u - 2.0 * R.c / (R.gamma - 1.0)
+        if self.front_L > self.front_R:
+            raise ValueError("no vacuum: u_R - u_L = %g below the escape "
+                             "speeds %g" % (R.u - L.u, self.front_L - L.u
+                                            + R.u - self.front_R))
+        self.waves = {"left": ("rarefaction", L.u - L.c, self.front_L),
+                      "right": ("rarefaction", R.u + R.c, self.front_R)}
+
+    def sample(self, xi):
+        xi = np.asarray(xi, dtype=float)
+        rho = np.zeros_like(xi)
+        u = np.full_like(xi, np.nan)
+        mid = 0.5 * (self.front_L + self.front_R)
+        side = np.where(xi <= mid, 0, 1)
+        p = np.where(side == 0, -self.L.pInf, -self.R.pInf).astype(float)
+        for K, sgn, name, sel in ((self.L, -1.0, "left", side == 0),
+                                  (self.R, 1.0, "right", side == 1)):
+            head, front = self.waves[name][1], self.waves[name][2]
+            outside = sel & (sgn * xi >= sgn * head)
+            fan = sel & ~outside & (sgn * xi > sgn * front)
+            rho[outside], u[outside], p[outside] = K.rho, K.u, K.p
+            g, s_ = K.gamma, xi[fan]
+            uf = 2.0 / (g + 1.0) * (-sgn * K.c + 0.5 * (g - 1.0) * K.u + s_)
+            cf = 2.0 / (g + 1.0) * (K.c - sgn * 0.5 * (g - 1.0) * (K.u - s_))
+            rho[fan] = K.rho * (cf / K.c) ** (2.0 / (g - 1.0))
+            u[fan] = uf
+            p[fan] = K.P * (cf / K.c) ** (2.0 * g / (g - 1.0)) - K.pInf
+        if rho.ndim == 0:
+            return float(rho), float(u), float(p), int(side)
+        return rho, u, p, side
+
+
 def solve(left, right):
     """Shorthand for RiemannProblem(left, right)."""
     return RiemannProblem(left, right)

@@ -14,8 +14,9 @@ Description
     time step; the hyperbolic step of the discrete equations method (face
     Riemann problems between the phases in contact); the body forces; the
     relaxation (velocity, pressure, traces, plasticity) with its state
-    checks; a step that fails them is retried with a shorter step
-    (stepControl).
+    checks; a step that fails them is repeated with the failing cells at
+    first order (the a posteriori fall-back of demSolver), then, if that
+    is not enough, retried with a shorter step (stepControl).
 
     Dictionaries: constant/phaseProperties (phases and their models),
     system/fvSchemes discreteEquations { riemannSolver HLLC; } and
@@ -94,13 +95,33 @@ int main(int argc, char *argv[])
         {
             dem.setAcceleration(forces.update(runTime.value() - 0.5*dt));
         }
-        dem.hyperbolicStep(dt, q);
-        forces.addSources(dt, q);
+        // The step; cells whose update fails the state checks are taken
+        // at first order (their faces with HLL) and the step repeated,
+        // before any cut of the time step (docs/numerics.md section 8.3)
+        dem.clearFallback();
+        mechanicalRelaxation::stateError err;
+        for (label round = 0; ; ++round)
+        {
+            dem.hyperbolicStep(dt, q);
+            forces.addSources(dt, q);
+            err = relaxation.correct(q, dt);
+            if
+            (
+                round == dem.maxFallbackRounds()
+             || !returnReduce(err.failed, orOp<bool>())
+             || !dem.addFallback(relaxation.badCells())
+            )
+            {
+                break;
+            }
+            phases.restoreState();
+        }
 
-        if (!step.accept(relaxation.correct(q, dt)))
+        if (!step.accept(err))
         {
             continue;
         }
+        dem.countStep();
 
         const label nVacuum =
             returnReduce(relaxation.nVacuum(), sumOp<label>());
@@ -121,6 +142,7 @@ int main(int argc, char *argv[])
         runTime.writeNow();
     }
 
+    dem.reportFallback();
     runTime.printExecutionTime(Info);
 
     Info<< "End\n" << endl;

@@ -28,7 +28,11 @@ Foam::boundaryFaceStates::boundaryFaceStates(const phaseSystem& phases)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::boundaryFaceStates::update(const reconstruction& rec)
+void Foam::boundaryFaceStates::update
+(
+    const reconstruction& rec,
+    const boolList* fallbackFaces
+)
 {
     if (!Pstream::parRun())
     {
@@ -56,12 +60,17 @@ void Foam::boundaryFaceStates::update(const reconstruction& rec)
         label i = 0;
         forAll(fc, facei)
         {
-            rec.faceState
-            (
-                fc[facei],
-                Cf[patch.start() + facei] - C[fc[facei]],
-                own[facei]
-            );
+            // First order on a fall-back face (demSolver)
+            const label meshFacei = patch.start() + facei;
+            const vector d(Cf[meshFacei] - C[fc[facei]]);
+            if (fallbackFaces && (*fallbackFaces)[meshFacei])
+            {
+                rec.cellFaceState(fc[facei], d, own[facei]);
+            }
+            else
+            {
+                rec.faceState(fc[facei], d, own[facei]);
+            }
             for (label k = 0; k < nPhases_; ++k)
             {
                 const phaseSide& s = own[facei][k];

@@ -2,6 +2,16 @@
 #include "faceFrame.H"
 #include "contactFractions.H"
 
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+Foam::dictionary Foam::demFaceAssembly::fallbackDict()
+{
+    dictionary dict;
+    dict.add("riemannSolver", word("HLL"));
+    return dict;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::demFaceAssembly::demFaceAssembly
@@ -13,6 +23,7 @@ Foam::demFaceAssembly::demFaceAssembly
     phases_(phases),
     nPhases_(phases.size()),
     riemann_(riemannSolver::New(dict)),
+    fallbackRiemann_(riemannSolver::New(fallbackDict())),
     dAlpha_(nPhases_),
     dMass_(nPhases_),
     dMomentum_(nPhases_),
@@ -133,9 +144,12 @@ void Foam::demFaceAssembly::solveFace
 (
     const std::vector<phaseSide>& sideL,
     const std::vector<phaseSide>& sideR,
-    const cobasis::matrix& R
+    const cobasis::matrix& R,
+    const bool fallback
 )
 {
+    const riemannSolver& solver = fallback ? fallbackRiemann_() : riemann_();
+
     for (label k = 0; k < nPhases_; ++k)
     {
         faceContribution& fc = faceResult_[k];
@@ -182,7 +196,7 @@ void Foam::demFaceAssembly::solveFace
             const riemannState L(faceFrameState(k, sl, R, n));
             const riemannState Rs(faceFrameState(j, sr, R, n));
 
-            riemannSolution sol = riemann_->solve(L, Rs, k == j);
+            riemannSolution sol = solver.solve(L, Rs, k == j);
             if (k == j)
             {
                 limitFailedTension(k, sl, sr, sol);

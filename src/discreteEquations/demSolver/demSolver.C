@@ -1,6 +1,7 @@
 #include "demSolver.H"
 #include "faceFrame.H"
 #include "wedgePolyPatch.H"
+#include "syncTools.H"
 #include "foamEigen.H"
 
 using Foam::foamEigen::toEigen;
@@ -28,8 +29,24 @@ Foam::demSolver::demSolver
     acceleration_(nullptr),
     faceO_(nPhases_),
     faceN_(nPhases_),
-    ghost_(nPhases_)
+    ghost_(nPhases_),
+    maxFallbackRounds_(schemeDict.getOrDefault<label>("fallbackRounds", 3)),
+    fallbackCells_(mesh_.nCells(), false),
+    fallbackFaces_(mesh_.nFaces(), false),
+    nFallbackFaces_(0),
+    cellSteps_(0),
+    faceSteps_(0),
+    fallbackCellSteps_(0),
+    fallbackFaceSteps_(0)
 {
+    if (maxFallbackRounds_ < 0)
+    {
+        FatalIOErrorInFunction(schemeDict)
+            << "fallbackRounds " << maxFallbackRounds_ << " must be >= 0"
+            << exit(FatalIOError);
+    }
+    reconstruction_->setFirstOrderCells(&fallbackCells_);
+
     const vectorField& Sf = mesh_.faceAreas();
     forAll(Sf, facei)
     {
@@ -57,15 +74,26 @@ void Foam::demSolver::internalFaces()
     const reconstruction& rec = reconstruction_();
     const bool centred = rec.timeCentred();
 
+    const bool anyFallback = nFallbackFaces_ > 0;
+
     forAll(nei, facei)
     {
         const label o = own[facei];
         const label nb = nei[facei];
 
-        rec.faceState(o, Cf[facei] - C[o], faceO_);
-        rec.faceState(nb, Cf[facei] - C[nb], faceN_);
+        const bool fallback = anyFallback && fallbackFaces_[facei];
+        if (fallback)
+        {
+            rec.cellFaceState(o, Cf[facei] - C[o], faceO_);
+            rec.cellFaceState(nb, Cf[facei] - C[nb], faceN_);
+        }
+        else
+        {
+            rec.faceState(o, Cf[facei] - C[o], faceO_);
+            rec.faceState(nb, Cf[facei] - C[nb], faceN_);
+        }
 
-        assembly_.solveFace(faceO_, faceN_, frames_[facei]);
+        assembly_.solveFace(faceO_, faceN_, frames_[facei], fallback);
 
         const cobasis::vector S(toEigen(Sf[facei]));
         assembly_.addToCell(o, 0, magSf_[facei]);
@@ -91,6 +119,7 @@ void Foam::demSolver::boundaryFaces()
     const reconstruction& rec = reconstruction_();
     const bool centred = rec.timeCentred();
     const boundaryKinds& kinds = phases_.boundary();
+    const bool anyFallback = nFallbackFaces_ > 0;
 
     // The cell's face state of a face that is not coupled
     std::vector<phaseSide> cellFace(nPhases_);
@@ -129,6 +158,7 @@ void Foam::demSolver::boundaryFaces()
             const label celli = fc[i];
             const cobasis::vector S(toEigen(Sf[facei]));
             const cobasis::vector n(S/magSf_[facei]);
+            const bool fallback = anyFallback && fallbackFaces_[facei];
 
             if (!coupled)
             {
@@ -138,7 +168,14 @@ void Foam::demSolver::boundaryFaces()
                   ? vector((Tinv & Cf[facei]) - C[celli])
                   : vector(Cf[facei] - C[celli])
                 );
-                rec.faceState(celli, d, cellFace);
+                if (fallback)
+                {
+                    rec.cellFaceState(celli, d, cellFace);
+                }
+                else
+                {
+                    rec.faceState(celli, d, cellFace);
+                }
             }
             // (a wedge face is never coupled: its rotation below acts on
             // cellFace)
@@ -168,12 +205,15 @@ void Foam::demSolver::boundaryFaces()
 
             if (cellIsLeft)
             {
-                assembly_.solveFace(side, ghost_, frames_[facei]);
+                assembly_.solveFace(side, ghost_, frames_[facei], fallback);
             }
             else
             {
                 // Same orientation as on the neighbouring processor
-                assembly_.solveFace(ghost_, side, faceFrame::rotation(-n));
+                assembly_.solveFace
+                (
+                    ghost_, side, faceFrame::rotation(-n), fallback
+                );
             }
 
             assembly_.addToCell(celli, cellIsLeft ? 0 : 1, magSf_[facei]);
@@ -286,7 +326,11 @@ void Foam::demSolver::prepare()
 void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
 {
     reconstruction_->update(dt, acceleration_);
-    boundaryStates_.update(reconstruction_());
+    boundaryStates_.update
+    (
+        reconstruction_(),
+        nFallbackFaces_ > 0 ? &fallbackFaces_ : nullptr
+    );
     assembly_.reset();
     cobasis_.reset();
 
@@ -295,3 +339,91 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
 
     newState(dt, q);
 }
+
+
+bool Foam::demSolver::addFallback(const labelUList& cells)
+{
+    bool added = false;
+    for (const label c : cells)
+    {
+        if (!fallbackCells_[c])
+        {
+            fallbackCells_[c] = true;
+            flaggedCells_.append(c);
+            added = true;
+        }
+    }
+    if (!returnReduce(added, orOp<bool>()))
+    {
+        return false;
+    }
+
+    // Every face of a flagged cell, also across processor boundaries
+    boolList nbrCells;
+    syncTools::swapBoundaryCellList(mesh_, fallbackCells_, nbrCells);
+
+    const labelUList& own = mesh_.faceOwner();
+    const labelUList& nei = mesh_.faceNeighbour();
+    const label nInternal = mesh_.nInternalFaces();
+    nFallbackFaces_ = 0;
+    forAll(fallbackFaces_, facei)
+    {
+        fallbackFaces_[facei] =
+            fallbackCells_[own[facei]]
+         || (
+                facei < nInternal
+              ? fallbackCells_[nei[facei]]
+              : nbrCells[facei - nInternal]
+            );
+        if (fallbackFaces_[facei]) ++nFallbackFaces_;
+    }
+    return true;
+}
+
+
+void Foam::demSolver::clearFallback()
+{
+    for (const label c : flaggedCells_)
+    {
+        fallbackCells_[c] = false;
+    }
+    flaggedCells_.clear();
+    if (nFallbackFaces_ > 0)
+    {
+        fallbackFaces_ = false;
+        nFallbackFaces_ = 0;
+    }
+}
+
+
+void Foam::demSolver::countStep()
+{
+    cellSteps_ += mesh_.nCells();
+    faceSteps_ += mesh_.nFaces();
+    const label nCells = returnReduce(flaggedCells_.size(), sumOp<label>());
+    if (nCells == 0)
+    {
+        return;
+    }
+    fallbackCellSteps_ += flaggedCells_.size();
+    fallbackFaceSteps_ += nFallbackFaces_;
+    Info<< "    fallback: " << nCells << " cells, "
+        << returnReduce(nFallbackFaces_, sumOp<label>())
+        << " faces at first order (HLL)" << nl;
+}
+
+
+void Foam::demSolver::reportFallback() const
+{
+    const scalar cells = returnReduce(cellSteps_, sumOp<scalar>());
+    const scalar faces = returnReduce(faceSteps_, sumOp<scalar>());
+    const scalar fbCells = returnReduce(fallbackCellSteps_, sumOp<scalar>());
+    const scalar fbFaces = returnReduce(fallbackFaceSteps_, sumOp<scalar>());
+    Info<< "Fallback to first order: " << fbCells << " of " << cells
+        << " cell updates (" << (cells > 0 ? fbCells/cells : 0) << "), "
+        << fbFaces << " of " << faces << " face updates ("
+        << (faces > 0 ? fbFaces/faces : 0) << ")" << nl;
+}
+
+
+// ************************************************************************* //

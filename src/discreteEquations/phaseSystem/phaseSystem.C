@@ -105,7 +105,7 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
     (
         dict_.getOrDefault<scalar>("massFractionMinor", 1e-6)
     ),
-    pVacuum_(dict_.getOrDefault<scalar>("pVacuum", -1)),
+    pVacuum_(dict_.getOrDefault<scalar>("pVacuum", 1)),
     U_
     (
         IOobject

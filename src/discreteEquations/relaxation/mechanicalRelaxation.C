@@ -290,6 +290,11 @@ void Foam::mechanicalRelaxation::fail
     const scalar value
 )
 {
+    // Cells are relaxed one after the other
+    if (badCells_.empty() || badCells_.last() != c)
+    {
+        badCells_.append(c);
+    }
     if (!err_.failed)
     {
         err_.failed = true;
@@ -660,6 +665,7 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
 )
 {
     err_ = stateError();
+    badCells_.clear();
     nVacuum_ = 0;
 
     const label nCells = phases_.mesh().nCells();

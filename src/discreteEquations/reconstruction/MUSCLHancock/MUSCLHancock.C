@@ -300,15 +300,27 @@ void Foam::reconstructions::MUSCLHancock::update
             cellSlopes& sl = slopes_[k][c];
             const cobasis::vector u(toEigen(U[c]));
 
-            sl.gAlpha = toEigen(gAlpha[c]);
+            // A cell the step takes at first order (the a posteriori
+            // fall-back) keeps only the velocity gradient, as the firstOrder
+            // reconstruction does
+            const bool first = firstOrderCell(c);
+            sl.gAlpha =
+                first ? cobasis::vector::Zero() : toEigen(gAlpha[c]);
             sl.dtAlpha = -halfDt*u.dot(sl.gAlpha);
             sl.minor = minAlpha[c] < phases_.alphaMinor();
 
-            if (sl.minor)
+            if (sl.minor || first)
             {
                 sl.gRho.setZero();
                 sl.gP.setZero();
-                sl.gU.setZero();
+                if (first)
+                {
+                    sl.gU = toEigen(gradU[c]);
+                }
+                else
+                {
+                    sl.gU.setZero();
+                }
                 for (int i = 0; i < 3; ++i) sl.gA[i].setZero();
                 sl.dtRho = 0;
                 sl.dtP = 0;

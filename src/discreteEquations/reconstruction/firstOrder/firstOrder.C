@@ -1,8 +1,6 @@
 #include "firstOrder.H"
-#include "foamEigen.H"
 #include "addToRunTimeSelectionTable.H"
 
-using Foam::foamEigen::toEigen;
 
 namespace Foam
 {
@@ -46,30 +44,7 @@ void Foam::reconstructions::firstOrder::faceState
     std::vector<phaseSide>& s
 ) const
 {
-    const vector& Uc = phases_.U()[celli];
-
-    cobasis::vector U(toEigen(Uc));
-    U += toEigen(d & gradU_[celli]);
-    const double dKe = 0.5*(U.squaredNorm() - magSqr(Uc));
-
-    for (label k = 0; k < nPhases_; ++k)
-    {
-        phaseSide& sk = s[k];
-        const hyperelasticPhase& ph = phases_.phase(k);
-        sk.alpha = phases_.alpha(k)[celli];
-        sk.rho = phases_.rho(k)[celli];
-        sk.p = phases_.p(k)[celli];
-        sk.U = U;
-        sk.A = toEigen(phases_.A(k)[celli]);
-        cellCarried(k, celli, sk);
-        sk.sigma = cells_.sigma(k, celli);
-        sk.E = cells_.E(k, celli) + dKe;
-        sk.a = cells_.a(k, celli);
-        sk.cT = std::sqrt(ph.cT2());
-        sk.solid = ph.solid();
-        sk.trace = sk.alpha < phases_.alphaTrace();
-    }
-    markMinor(s);
+    cellFaceState(celli, d, s);
 }
 
 

@@ -1,4 +1,7 @@
 #include "reconstruction.H"
+#include "foamEigen.H"
+
+using Foam::foamEigen::toEigen;
 
 namespace Foam
 {
@@ -26,7 +29,8 @@ Foam::reconstruction::reconstruction
         phases.boundary().limiterNeighbours(true),
         limitVelocity(dict)
     ),
-    gradU_()
+    gradU_(),
+    firstOrderCells_(nullptr)
 {}
 
 
@@ -98,3 +102,40 @@ void Foam::reconstruction::centreState
     FatalErrorInFunction
         << type() << " has no time-centred state" << abort(FatalError);
 }
+
+
+void Foam::reconstruction::cellFaceState
+(
+    const label celli,
+    const vector& d,
+    std::vector<phaseSide>& s
+) const
+{
+    const vector& Uc = phases_.U()[celli];
+
+    cobasis::vector U(toEigen(Uc));
+    U += toEigen(d & gradU_[celli]);
+    const double dKe = 0.5*(U.squaredNorm() - magSqr(Uc));
+
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        phaseSide& sk = s[k];
+        const hyperelasticPhase& ph = phases_.phase(k);
+        sk.alpha = phases_.alpha(k)[celli];
+        sk.rho = phases_.rho(k)[celli];
+        sk.p = phases_.p(k)[celli];
+        sk.U = U;
+        sk.A = toEigen(phases_.A(k)[celli]);
+        cellCarried(k, celli, sk);
+        sk.sigma = cells_.sigma(k, celli);
+        sk.E = cells_.E(k, celli) + dKe;
+        sk.a = cells_.a(k, celli);
+        sk.cT = std::sqrt(ph.cT2());
+        sk.solid = ph.solid();
+        sk.trace = sk.alpha < phases_.alphaTrace();
+    }
+    markMinor(s);
+}
+
+
+// ************************************************************************* //

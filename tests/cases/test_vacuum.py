@@ -1,0 +1,174 @@
+#!/usr/bin/python3
+"""Double rarefaction to vacuum in air (1-D), against the exact solution.
+
+The case tests/cases/vacuum: air (ideal gas, gamma 1.4, rho 1.2, p 1e5) on
+[0, 2] m, the left half at -2000 m/s, the right half at +2000 m/s. They
+move apart faster than the escape speeds 2 (c_L + c_R)/(gamma - 1) =
+3420 m/s, so a vacuum opens between two rarefaction fans (Toro, ch. 4.6;
+tests/lib/exactRiemann.py, VacuumProblem): at t = 200 us the fans span
+|x - 1| in [0.058, 0.468] m, the vacuum |x - 1| < 0.058 m.
+
+Run at 200, 400 and 800 cells. Errors are relative L1 norms,
+
+    e(q) = sum |q - q_exact| dx / sum |q_exact| dx,
+
+of rho and p against the exact cell averages; u is compared where the
+exact density is above 1e-3 rho0 (it is undefined in the vacuum).
+
+Checks:
+- every run completes with finite fields, rho > 0 and p > 0 (admissible);
+- the errors of rho, p and u fall with each refinement, and at 800 cells
+  rho < 0.6 %, p < 0.5 %, u < 0.5 % (measured when written: 0.39, 0.27,
+  0.26 %; 200 cells: 1.2, 1.1, 0.42 %);
+- the vacuum is a vacuum: at 800 cells the largest density in the exact
+  vacuum is below 1 % of rho0 and it falls with each refinement;
+- conservation: the mass and total energy in the domain equal their
+  initial values minus what the uniform outflow at both ends carries out
+  (rho0 u0 and (rho0 E0 + p0) u0 per unit area and time, each end; the
+  fans stay inside), to 1e-10 relative;
+- a posteriori fall-back and vacuum floor: the log's run totals are
+  printed (informative).
+"""
+import os
+import re
+import sys
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "lib"))
+import foamcase as fc                         # noqa: E402
+from checks import Checks                     # noqa: E402
+from exactRiemann import VacuumProblem        # noqa: E402
+
+CASE = os.path.join(HERE, "vacuum")
+RESOLUTIONS = (200, 400, 800)
+RUN_TIMEOUT = 600
+T_END = 2e-4
+L = 2.0
+X0 = 1.0
+RHO0, U0, P0, GAMMA = 1.2, 2000.0, 1e5, 1.4
+BOUNDS = {"rho": 0.006, "p": 0.005, "u": 0.005}
+VACUUM_BOUND = 0.01
+CONSERVATION_TOL = 1e-10
+
+checks = Checks()
+
+
+def rel_l1(q, q_ref, dx):
+    return np.sum(np.abs(q - q_ref) * dx) / np.sum(np.abs(q_ref) * dx)
+
+
+def run(n):
+    name = "vacuum_n%d" % n
+    case = fc.copy_tutorial(CASE, name)
+    fc.set_entry(case, "system/blockMeshDict", "nx", n)
+    t0 = time.time()
+    fc.run(case, "./Allrun", log="log.Allrun", timeout=RUN_TIMEOUT)
+    wall = time.time() - t0
+    t = fc.find_time(case, T_END)
+    x = fc.cell_centres(case, t)[:, 0]
+    fields = {
+        "rho": fc.read_field(case, t, "rho.air"),
+        "p": fc.read_field(case, t, "p.air"),
+        "u": fc.read_field(case, t, "U")[:, 0],
+    }
+    log = open(os.path.join(case, "log.impactFoam")).read()
+    return x, fields, log, wall
+
+
+def main():
+    missing = fc.require_apps("impactFoam", "blockMesh", "setFields")
+    if missing:
+        checks.fail("vacuum_run", "%s not found on PATH (impactFoam not "
+                    "built or environment not sourced: . etc/bashrc)"
+                    % " ".join(missing))
+        checks.exit()
+
+    exact = VacuumProblem((RHO0, -U0, P0, GAMMA, 0.0),
+                          (RHO0, U0, P0, GAMMA, 0.0))
+    checks.note("exact: fans from |x - 1| = %.4f to %.4f m, vacuum inside "
+                "|x - 1| < %.4f m at t = %g s"
+                % (-exact.waves["left"][1] * T_END,
+                   -exact.waves["left"][2] * T_END,
+                   -exact.waves["left"][2] * T_END, T_END))
+
+    errors = {q: [] for q in BOUNDS}
+    vacuum_max = []
+    for n in RESOLUTIONS:
+        tag = "vacuum_n%d" % n
+        try:
+            x, f, log, wall = run(n)
+        except fc.FoamError as e:
+            checks.fail(tag + "_run", e.summary)
+            checks.exit()
+        idx = np.argsort(x)
+        x = x[idx]
+        f = {k: v[idx] for k, v in f.items()}
+        dx = L / n
+        edges = np.linspace(0.0, L, n + 1)
+        rho_e, u_e, p_e, _ = exact.cell_averages(edges, T_END, x0=X0)
+
+        finite = all(np.all(np.isfinite(v)) for v in f.values())
+        checks.check(tag + "_admissible", finite and f["rho"].min() > 0
+                     and f["p"].min() > 0,
+                     "fields finite %s; min rho %.3g kg/m3, min p %.4g Pa "
+                     "(%d cells, %.1f s)" % (finite, f["rho"].min(),
+                                             f["p"].min(), n, wall))
+
+        errors["rho"].append(rel_l1(f["rho"], rho_e, dx))
+        errors["p"].append(rel_l1(f["p"], p_e, dx))
+        # u where the exact state has matter (rho above 1e-3 rho0 over
+        # the whole cell)
+        m = np.isfinite(u_e) & (rho_e > 1e-3 * RHO0)
+        errors["u"].append(rel_l1(f["u"][m], u_e[m], dx))
+
+        in_vacuum = np.abs(x - X0) < -exact.waves["left"][2] * T_END - dx
+        vacuum_max.append(f["rho"][in_vacuum].max() / RHO0)
+
+        # Conservation against the outflow at both ends (the fans stay
+        # inside, the boundary states are the initial ones)
+        mass = np.sum(f["rho"]) * dx
+        e_int = f["p"] / ((GAMMA - 1) * f["rho"])
+        energy = np.sum(f["rho"] * (e_int + 0.5 * f["u"]**2)) * dx
+        E0 = P0 / ((GAMMA - 1) * RHO0) + 0.5 * U0**2
+        mass_ref = RHO0 * L - 2 * RHO0 * U0 * T_END
+        energy_ref = RHO0 * E0 * L - 2 * (RHO0 * E0 + P0) * U0 * T_END
+        dm = abs(mass - mass_ref) / mass_ref
+        dE = abs(energy - energy_ref) / energy_ref
+        checks.check(tag + "_conservation",
+                     dm < CONSERVATION_TOL and dE < CONSERVATION_TOL,
+                     "mass %.3e, total energy %.3e relative to the initial "
+                     "content minus the outflow (bound %g)"
+                     % (dm, dE, CONSERVATION_TOL))
+
+        totals = re.findall(r"Fallback to first order: .*", log)
+        floors = re.findall(r"vacuum floor \(pVacuum\) in (\d+) cells", log)
+        checks.note("%s: L1 rho %.3e, p %.3e, u %.3e; largest rho in the "
+                    "vacuum %.3e rho0; %s; vacuum floor in %d steps"
+                    % (tag, errors["rho"][-1], errors["p"][-1],
+                       errors["u"][-1], vacuum_max[-1],
+                       totals[-1] if totals else "no fall-back total",
+                       len(floors)))
+
+    for q, bound in BOUNDS.items():
+        e = errors[q]
+        falling = all(b < a for a, b in zip(e, e[1:]))
+        checks.check("vacuum_L1_%s" % q, falling and e[-1] < bound,
+                     "relative L1 error at %s cells: %s (falling: %s; "
+                     "bound %g at %d)"
+                     % ("/".join(str(n) for n in RESOLUTIONS),
+                        " / ".join("%.3e" % v for v in e), falling, bound,
+                        RESOLUTIONS[-1]))
+    falling = all(b < a for a, b in zip(vacuum_max, vacuum_max[1:]))
+    checks.check("vacuum_region", falling and vacuum_max[-1] < VACUUM_BOUND,
+                 "largest density in the exact vacuum over rho0: %s "
+                 "(falling: %s; bound %g)"
+                 % (" / ".join("%.3e" % v for v in vacuum_max), falling,
+                    VACUUM_BOUND))
+    checks.exit()
+
+
+if __name__ == "__main__":
+    main()
