@@ -32,6 +32,7 @@ Description
 #include "mechanicalRelaxation.H"
 #include "bodyForces.H"
 #include "stepControl.H"
+#include "OStringStream.H"
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
@@ -84,6 +85,20 @@ int main(int argc, char *argv[])
     stepControl step(runTime, phases, dem);
     conservedState q;
 
+    // The totals at each write time: the domain's mass and energy change
+    // only through its boundaries and what the relaxation sets without a
+    // payer (the vacuum floor of a lone gas, a trace heavier than its
+    // cell's other phases), summed here
+    scalar unpaidTotal = 0;
+    {
+        const Pair<scalar> totals(phases.totals());
+        OStringStream os;
+        os.precision(15);
+        os  << "Initial totals: mass " << totals.first() << " kg, energy "
+            << totals.second() << " J";
+        Info<< os.str().c_str() << nl;
+    }
+
     Info<< "\nStarting time loop\n" << endl;
 
     while (runTime.run())
@@ -130,10 +145,31 @@ int main(int argc, char *argv[])
             Info<< "    vacuum floor (pVacuum) in " << nVacuum << " cells"
                 << nl;
         }
+        const label nUnpaid =
+            returnReduce(relaxation.nUnpaid(), sumOp<label>());
+        if (nUnpaid)
+        {
+            const scalar unpaid =
+                returnReduce(relaxation.unpaidEnergy(), sumOp<scalar>());
+            unpaidTotal += unpaid;
+            Info<< "    set without a payer (vacuum floor, trace reset) in "
+                << nUnpaid << " cells: energy added " << unpaid << " J"
+                << nl;
+        }
 
         phases.correctBoundaryConditions();
         phases.correctMixture();
         step.write();
+        if (runTime.writeTime())
+        {
+            const Pair<scalar> totals(phases.totals());
+            OStringStream os;
+            os.precision(15);
+            os  << "    totals: mass " << totals.first() << " kg, energy "
+                << totals.second() << " J, energy added without a payer "
+                << unpaidTotal << " J";
+            Info<< os.str().c_str() << nl;
+        }
     }
 
     // The final state, also when endTime is not a write time

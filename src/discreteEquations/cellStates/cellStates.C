@@ -47,11 +47,15 @@ void Foam::cellStates::update()
 
             // The acoustic eigenproblem for the phases that set the time
             // step; a minor phase (a trace is unstrained) takes the
-            // small-strain speed c_h^2 + 4/3 mu/rho0
+            // small-strain speed c_h^2 + 4/3 mu/rho0, c_h^2 floored at 0
+            // (a trace heavier than the cell's other phases keeps its own
+            // energy, mechanicalRelaxation::relaxTraces, and may sit below
+            // pMin: debris smeared into a vacuum)
             a_[k][celli] = std::sqrt
             (
                 alpha[celli] < aMinor
-              ? ph.eos().c2(rho[celli], p[celli]) + 4.0/3.0*cT2
+              ? max(ph.eos().c2(rho[celli], p[celli]), scalar(0))
+              + 4.0/3.0*cT2
               : ph.a2Max(rho[celli], p[celli], Ac)
             );
         }

@@ -31,6 +31,10 @@ Foam::demSolver::demSolver
     faceN_(nPhases_),
     ghost_(nPhases_),
     maxFallbackRounds_(schemeDict.getOrDefault<label>("fallbackRounds", 3)),
+    fallbackInterfaces_
+    (
+        schemeDict.getOrDefault<bool>("fallbackInterfaces", false)
+    ),
     fallbackCells_(mesh_.nCells(), false),
     fallbackFaces_(mesh_.nFaces(), false),
     nFallbackFaces_(0),
@@ -392,6 +396,25 @@ void Foam::demSolver::clearFallback()
     {
         fallbackFaces_ = false;
         nFallbackFaces_ = 0;
+    }
+
+    if (fallbackInterfaces_)
+    {
+        const scalar aMinor = phases_.alphaMinor();
+        DynamicList<label> mixed;
+        for (label c = 0; c < mesh_.nCells(); ++c)
+        {
+            for (label k = 0; k < nPhases_; ++k)
+            {
+                const scalar a = phases_.alpha(k)[c];
+                if (a > aMinor && a < 1 - aMinor)
+                {
+                    mixed.append(c);
+                    break;
+                }
+            }
+        }
+        addFallback(mixed);
     }
 }
 

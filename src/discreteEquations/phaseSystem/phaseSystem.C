@@ -6,6 +6,8 @@
 #include "zeroGradientFvPatchFields.H"
 #include "OSspecific.H"
 
+using Foam::foamEigen::toEigen;
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::phaseSystem::checkFieldNames(const wordList& prefixes) const
@@ -341,6 +343,35 @@ void Foam::phaseSystem::saveState()
         phase.saveState();
     }
     USave_ = U_.primitiveField();
+}
+
+
+Foam::Pair<Foam::scalar> Foam::phaseSystem::totals() const
+{
+    const scalarField& V = mesh_.V();
+    const vectorField& U = U_.primitiveField();
+    scalar mass = 0;
+    scalar energy = 0;
+    for (label k = 0; k < size(); ++k)
+    {
+        const hyperelasticPhase& ph = phase(k);
+        const scalarField& alpha = this->alpha(k).primitiveField();
+        const scalarField& rho = this->rho(k).primitiveField();
+        const scalarField& p = this->p(k).primitiveField();
+        const tensorField& A = this->A(k).primitiveField();
+        forAll(V, c)
+        {
+            const scalar m = alpha[c]*rho[c]*V[c];
+            mass += m;
+            energy +=
+                m*(ph.e(rho[c], p[c], toEigen(A[c])) + 0.5*magSqr(U[c]));
+        }
+    }
+    return Pair<scalar>
+    (
+        returnReduce(mass, sumOp<scalar>()),
+        returnReduce(energy, sumOp<scalar>())
+    );
 }
 
 

@@ -21,6 +21,8 @@ Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
     held_(nPhases_, false),
     pHeld_(nPhases_, 0),
     nVacuum_(0),
+    nUnpaid_(0),
+    unpaidEnergy_(0),
     err_(),
     nActive_(0),
     traceVolume_(0)
@@ -166,10 +168,15 @@ bool Foam::mechanicalRelaxation::interfacePressure
 }
 
 
-bool Foam::mechanicalRelaxation::vacuumFloor(const label k)
+bool Foam::mechanicalRelaxation::vacuumFloor(const label c, const label k)
 {
-    // The fluid k is set to pMin + pVacuum at its density; the energy this
-    // takes comes from the heaviest other phase that is not a trace, if any
+    // The fluid k is set to pMin + pVacuum at its density, or colder: to
+    // the isentrope through its state before the step if that is lower (a
+    // gas expanding into a vacuum follows its isentrope; at the floor's
+    // constant pressure its sound speed, sqrt(gamma p/rho) for a gas, would
+    // grow without bound as the density falls, and the time step would
+    // collapse with it). The energy this takes comes from the heaviest
+    // other phase that is not a trace, if any
     label payer = -1;
     for (label j = 0; j < nPhases_; ++j)
     {
@@ -179,14 +186,32 @@ bool Foam::mechanicalRelaxation::vacuumFloor(const label k)
         }
     }
     const equationOfState& eos = phases_.phase(k).eos();
-    const scalar eFloor =
-        eos.e(1/v0_[k], eos.pMin(1/v0_[k]) + phases_.pVacuum());
+    const scalar rho = 1/v0_[k];
+    const scalar pMin = eos.pMin(rho);
+    scalar eFloor = eos.e(rho, pMin + phases_.pVacuum());
+
+    const scalar rhoOld = phases_.rho(k)[c];
+    const scalar pOld = phases_.p(k)[c];
+    if (rhoOld > 0 && eos.admissible(rhoOld, pOld))
+    {
+        const scalar eIs = eos.eIsentropic(rho, rhoOld, eos.e(rhoOld, pOld));
+        if (eIs < eFloor && eos.p(rho, eIs) > pMin)
+        {
+            eFloor = eIs;
+        }
+    }
+
     if (payer >= 0)
     {
         eh0_[payer] -= m_[k]*(eFloor - eh0_[k])/m_[payer];
     }
-    // else: the fluid is alone (the other phases traces) and the floor
-    // adds at most alpha pVacuum/(gamma - 1) per unit volume
+    else
+    {
+        // The fluid is alone (the other phases traces): the floor adds at
+        // most alpha pVacuum/(gamma - 1) per unit volume, counted
+        unpaidEnergy_ += m_[k]*(eFloor - eh0_[k])*phases_.mesh().V()[c];
+        ++nUnpaid_;
+    }
     eh0_[k] = eFloor;
     ++nVacuum_;
     return true;
@@ -459,7 +484,7 @@ void Foam::mechanicalRelaxation::screenEnergies
             else if
             (
                 phases_.pVacuum() >= 0 && !phases_.phase(k).solid()
-             && vacuumFloor(k)
+             && vacuumFloor(c, k)
             )
             {}
             else
@@ -511,15 +536,49 @@ void Foam::mechanicalRelaxation::relaxTraces
     const scalar pStar
 )
 {
+    // The energy a trace's reset takes or gives is paid by the heaviest
+    // phase that is not a trace (the cell's largest by volume if none)
+    label payer = main;
+    for (label j = 0; j < nPhases_; ++j)
+    {
+        if (!trace_[j] && m_[j] > m_[payer]) payer = j;
+    }
+
     for (label k = 0; k < nPhases_; ++k)
     {
         if (!trace_[k]) continue;
         const hyperelasticPhase& ph = phases_.phase(k);
+        const equationOfState& eos = ph.eos();
+        const scalar rhoRef = eos.referenceDensity();
+        const scalar rhoTrace = 1/v0_[k];
+        if
+        (
+            k != main
+         && (
+                !(rhoTrace < eos.rhoMax())
+             || (rhoTrace > 0 && rhoRef > 0 && rhoTrace < 0.5*rhoRef)
+            )
+        )
+        {
+            // A trace of a model with a reference density (a metal) that
+            // the transport left beyond rhoMax, or below half its
+            // reference density (its volume fraction does not fit its
+            // mass: a few 1e-7 of metal smeared into a vacuum, where a
+            // Mie-Grueneisen reference curve at eta = -5e4 gives 1e16
+            // J/kg) takes its reference density, the volume exchanged
+            // with the cell's largest phase (at most alphaTrace of the
+            // cell's volume)
+            const scalar rhoNew = rhoRef > 0 ? rhoRef : 0.5*eos.rhoMax();
+            const scalar dAlpha = m_[k]/rhoNew - alpha_[k];
+            alpha_[k] += dAlpha;
+            alpha_[main] -= dAlpha;
+            v0_[k] = alpha_[k]/m_[k];
+            v0_[main] = alpha_[main]/m_[main];
+        }
         const scalar rho = 1/v0_[k];
         if (!(rho < ph.eos().rhoMax()))
         {
-            // A trace squeezed beyond the highest density of its equation
-            // of state has no state to be reset to
+            // No state to be reset to
             fail(c, k, "rho>=rhoMax", rho);
             continue;
         }
@@ -538,7 +597,22 @@ void Foam::mechanicalRelaxation::relaxTraces
             ref.first() > 0
           ? ph.eos().eIsentropic(rho, ref.first(), ref.second())
           : ph.eos().e(rho, pk);
-        eh0_[main] -= m_[k]*(eNew - eh0_[k] - eeOld)/m_[main];
+        if (m_[k] < m_[payer])
+        {
+            eh0_[payer] -= m_[k]*(eNew - eh0_[k] - eeOld)/m_[payer];
+        }
+        else
+        {
+            // A trace heavier than every other phase of the cell (metal
+            // debris in a vacuum: alpha 1e-7 next to a gas at rho 1e-11)
+            // is reset without a payer: handing its energy change to a
+            // lighter phase would heat that phase by the ratio of the
+            // masses (a gas at 1e11 Pa, the time step collapsing). The
+            // energy changes by the trace's m (eNew - e), counted
+            unpaidEnergy_ +=
+                m_[k]*(eNew - eh0_[k] - eeOld)*phases_.mesh().V()[c];
+            ++nUnpaid_;
+        }
         eh0_[k] = eNew;
     }
 }
@@ -590,7 +664,7 @@ bool Foam::mechanicalRelaxation::relaxPlastic
 }
 
 
-void Foam::mechanicalRelaxation::vacuumAfterRelaxation()
+void Foam::mechanicalRelaxation::vacuumAfterRelaxation(const label c)
 {
     for (label k = 0; k < nPhases_; ++k)
     {
@@ -603,7 +677,7 @@ void Foam::mechanicalRelaxation::vacuumAfterRelaxation()
          && !(eos.p(1/v0_[k], eh0_[k]) > eos.pMin(1/v0_[k]))
         )
         {
-            vacuumFloor(k);
+            vacuumFloor(c, k);
         }
     }
 }
@@ -667,6 +741,8 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
     err_ = stateError();
     badCells_.clear();
     nVacuum_ = 0;
+    nUnpaid_ = 0;
+    unpaidEnergy_ = 0;
 
     const label nCells = phases_.mesh().nCells();
     for (label c = 0; c < nCells; ++c)
@@ -721,7 +797,7 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
         // A fluid that the pressure relaxation took to the edge of its
         // admissible range (a gas opened up by a solid in tension: p* at
         // pMin to round-off)
-        vacuumAfterRelaxation();
+        vacuumAfterRelaxation(c);
 
         // 6. Checks; the phase fields
         checkAndStore(c, q, u);

@@ -91,7 +91,7 @@ void Foam::mechanicalRelaxation::relaxFailed
                 continue;
             }
             trace_[k] = false;
-            vacuumFloor(k);
+            vacuumFloor(c, k);
         }
         trace_[k] = false;
         fluid = true;
