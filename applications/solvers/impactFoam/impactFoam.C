@@ -115,15 +115,17 @@ int main(int argc, char *argv[])
         // before any cut of the time step (docs/numerics.md section 8.3)
         dem.clearFallback();
         mechanicalRelaxation::stateError err;
+        bool failed = false;
         for (label round = 0; ; ++round)
         {
             dem.hyperbolicStep(dt, q);
             forces.addSources(dt, q);
             err = relaxation.correct(q, dt);
+            failed = returnReduce(err.failed, orOp<bool>());
             if
             (
-                round == dem.maxFallbackRounds()
-             || !returnReduce(err.failed, orOp<bool>())
+                !failed
+             || round == dem.maxFallbackRounds()
              || !dem.addFallback(relaxation.badCells())
             )
             {
@@ -132,28 +134,33 @@ int main(int argc, char *argv[])
             phases.restoreState();
         }
 
-        if (!step.accept(err))
+        if (!step.accept(err, failed))
         {
             continue;
         }
-        dem.countStep();
 
-        const label nVacuum =
-            returnReduce(relaxation.nVacuum(), sumOp<label>());
-        if (nVacuum)
+        // What the step did beyond the scheme, summed over the processors
+        // in one reduction: vacuum floors, phases set without a payer and
+        // the energy that added, cells and faces at first order
+        List<scalar> counts(5);
+        counts[0] = relaxation.nVacuum();
+        counts[1] = relaxation.nUnpaid();
+        counts[2] = relaxation.unpaidEnergy();
+        counts[3] = dem.nFallbackCells();
+        counts[4] = dem.nFallbackFaces();
+        Pstream::listCombineGather(counts, plusEqOp<scalar>());
+        Pstream::listCombineScatter(counts);
+        dem.countStep(counts[3], counts[4]);
+        if (counts[0] > 0)
         {
-            Info<< "    vacuum floor (pVacuum) in " << nVacuum << " cells"
+            Info<< "    vacuum floor (pVacuum) in " << counts[0] << " cells"
                 << nl;
         }
-        const label nUnpaid =
-            returnReduce(relaxation.nUnpaid(), sumOp<label>());
-        if (nUnpaid)
+        if (counts[1] > 0)
         {
-            const scalar unpaid =
-                returnReduce(relaxation.unpaidEnergy(), sumOp<scalar>());
-            unpaidTotal += unpaid;
+            unpaidTotal += counts[2];
             Info<< "    set without a payer (vacuum floor, trace reset) in "
-                << nUnpaid << " cells: energy added " << unpaid << " J"
+                << counts[1] << " cells: energy added " << counts[2] << " J"
                 << nl;
         }
 

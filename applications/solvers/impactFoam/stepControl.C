@@ -77,9 +77,13 @@ Foam::scalar Foam::stepControl::advance()
 }
 
 
-bool Foam::stepControl::accept(const mechanicalRelaxation::stateError& err)
+bool Foam::stepControl::accept
+(
+    const mechanicalRelaxation::stateError& err,
+    const bool failedAnywhere
+)
 {
-    if (!returnReduce(err.failed, orOp<bool>()))
+    if (!failedAnywhere)
     {
         // A good step: let a reduced time step grow back
         dtFactor_ = min(2*dtFactor_, scalar(1));

@@ -419,20 +419,21 @@ void Foam::demSolver::clearFallback()
 }
 
 
-void Foam::demSolver::countStep()
+void Foam::demSolver::countStep
+(
+    const scalar nCellsAll,
+    const scalar nFacesAll
+)
 {
     cellSteps_ += mesh_.nCells();
     faceSteps_ += mesh_.nFaces();
-    const label nCells = returnReduce(flaggedCells_.size(), sumOp<label>());
-    if (nCells == 0)
+    if (nCellsAll > 0)
     {
-        return;
+        fallbackCellSteps_ += flaggedCells_.size();
+        fallbackFaceSteps_ += nFallbackFaces_;
+        Info<< "    fallback: " << nCellsAll << " cells, " << nFacesAll
+            << " faces at first order (HLL)" << nl;
     }
-    fallbackCellSteps_ += flaggedCells_.size();
-    fallbackFaceSteps_ += nFallbackFaces_;
-    Info<< "    fallback: " << nCells << " cells, "
-        << returnReduce(nFallbackFaces_, sumOp<label>())
-        << " faces at first order (HLL)" << nl;
 }
 
 
