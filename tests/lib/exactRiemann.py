@@ -52,6 +52,19 @@ class SideState(object):
     def sound_speed(self, rho, p):
         return np.sqrt(self.gamma * (p + self.pInf) / rho)
 
+    def fan(self, sgn, xi):
+        """rho, u, p inside this side's rarefaction fan at similarity
+        coordinate xi; sgn -1 for the left fan (u - c = xi,
+        u + 2c/(g-1) = uL + 2cL/(g-1)), +1 for the right (u + c = xi,
+        u - 2c/(g-1) = uR - 2cR/(g-1))."""
+        g = self.gamma
+        u = 2.0 / (g + 1.0) * (-sgn * self.c + 0.5 * (g - 1.0) * self.u + xi)
+        c = 2.0 / (g + 1.0) * (self.c - sgn * 0.5 * (g - 1.0)
+                               * (self.u - xi))
+        rho = self.rho * (c / self.c) ** (2.0 / (g - 1.0))
+        p = self.P * (c / self.c) ** (2.0 * g / (g - 1.0)) - self.pInf
+        return rho, u, p
+
     def f_and_df(self, p):
         """Toro's f_K(p*) (velocity change across the K wave) and its
         derivative, for star pressure p."""
@@ -193,16 +206,7 @@ class RiemannProblem(object):
             rho[outside], u[outside], p[outside] = K.rho, K.u, K.p
             rho[star], u[star], p[star] = rho_star, self.u_star, self.p_star
             if np.any(fan):
-                g = K.gamma
-                s = xi[fan]
-                # left fan (sgn = -1): u - c = xi, u + 2c/(g-1) = uL + 2cL/(g-1)
-                # right fan (sgn = +1): u + c = xi, u - 2c/(g-1) = uR - 2cR/(g-1)
-                uf = 2.0 / (g + 1.0) * (-sgn * K.c + 0.5 * (g - 1.0) * K.u + s)
-                cf = 2.0 / (g + 1.0) * (K.c - sgn * 0.5 * (g - 1.0)
-                                        * (K.u - s))
-                rho[fan] = K.rho * (cf / K.c) ** (2.0 / (g - 1.0))
-                u[fan] = uf
-                p[fan] = K.P * (cf / K.c) ** (2.0 * g / (g - 1.0)) - K.pInf
+                rho[fan], u[fan], p[fan] = K.fan(sgn, xi[fan])
         if rho.ndim == 0:
             return float(rho), float(u), float(p), int(side)
         return rho, u, p, side
@@ -278,12 +282,7 @@ class VacuumProblem(RiemannProblem):
             outside = sel & (sgn * xi >= sgn * head)
             fan = sel & ~outside & (sgn * xi > sgn * front)
             rho[outside], u[outside], p[outside] = K.rho, K.u, K.p
-            g, s_ = K.gamma, xi[fan]
-            uf = 2.0 / (g + 1.0) * (-sgn * K.c + 0.5 * (g - 1.0) * K.u + s_)
-            cf = 2.0 / (g + 1.0) * (K.c - sgn * 0.5 * (g - 1.0) * (K.u - s_))
-            rho[fan] = K.rho * (cf / K.c) ** (2.0 / (g - 1.0))
-            u[fan] = uf
-            p[fan] = K.P * (cf / K.c) ** (2.0 * g / (g - 1.0)) - K.pInf
+            rho[fan], u[fan], p[fan] = K.fan(sgn, xi[fan])
         if rho.ndim == 0:
             return float(rho), float(u), float(p), int(side)
         return rho, u, p, side
