@@ -247,6 +247,23 @@ def mie_gruneisen(case):
 
 # name: (modifications before setFields, description, patterns the
 # message must hold besides the common ones)
+def run_to_completion(tag, name, modifications):
+    """Set up and run a case that must complete: (case, log), or
+    (None, None) after recording the failure under tag."""
+    try:
+        case = prepare(name, modifications)
+    except (fc.FoamError, OSError) as e:
+        checks.fail(tag, "could not set up the case: %s"
+                    % getattr(e, "summary", e))
+        return None, None
+    code, log = run_impactfoam(case)
+    if code != 0:
+        checks.fail(tag, "exit code %s: %s" % (code, one_line(
+            fatal_message(log) or log[-400:])))
+        return None, None
+    return case, log
+
+
 def vacuum_off(case):
     """The vacuum floor switched off: a torn gas stops the run."""
     edit(case, PP, "phases (copper air);", "phases (copper air);\npVacuum -1;")
@@ -265,16 +282,9 @@ def check_vacuum():
     """copperLeavesAir with the default vacuum floor: completes, the torn
     air floored at 1 Pa (reported in the log), finite fields."""
     tag = "V9_vacuumFloorByDefault"
-    try:
-        case = prepare("vacuum", [set_velocities(-5000.0, 0.0)])
-    except (fc.FoamError, OSError) as e:
-        checks.fail(tag, "could not set up the case: %s"
-                    % getattr(e, "summary", e))
-        return
-    code, log = run_impactfoam(case)
-    if code != 0:
-        checks.fail(tag, "exit code %s: %s" % (code, one_line(
-            fatal_message(log) or log[-400:])))
+    case, log = run_to_completion(tag, "vacuum",
+                                  [set_velocities(-5000.0, 0.0)])
+    if case is None:
         return
     floored = re.findall(r"vacuum floor \(pVacuum\) in (\d+) cells", log)
     t = fc.latest_time(case)
@@ -299,17 +309,10 @@ def check_rebound():
     before, mixed cells handed the copper a spurious tension of 1e15 Pa
     and the run stopped beyond rhoMax)."""
     tag = "V9_mieGruneisenRebound"
-    try:
-        case = prepare("mieGruneisenRebound",
-                       [mie_gruneisen, set_velocities(-3000.0, -3000.0)])
-    except (fc.FoamError, OSError) as e:
-        checks.fail(tag, "could not set up the case: %s"
-                    % getattr(e, "summary", e))
-        return
-    code, log = run_impactfoam(case)
-    if code != 0:
-        checks.fail(tag, "exit code %s: %s" % (code, one_line(
-            fatal_message(log) or log[-400:])))
+    case, log = run_to_completion(
+        tag, "mieGruneisenRebound",
+        [mie_gruneisen, set_velocities(-3000.0, -3000.0)])
+    if case is None:
         return
     t = fc.latest_time(case)
     a = fc.read_field(case, t, "alpha.copper")
