@@ -11,6 +11,8 @@ Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
 :
     phases_(phases),
     nPhases_(phases.size()),
+    rhoRef_(nPhases_),
+    rhoCompressed_(nPhases_),
     m_(nPhases_),
     v0_(nPhases_),
     eh0_(nPhases_),
@@ -26,7 +28,23 @@ Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
     err_(),
     nActive_(0),
     traceVolume_(0)
-{}
+{
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        // A metal at twice its reference density is beyond any state of
+        // the impacts the code is for (copper on copper at 6 km/s: 1.6 rho0
+        // on its Hugoniot). A minor phase or a trace there is what the
+        // transport left (copper at 3 rho0, beside the pole of its
+        // Hugoniot, as a trace in an air cell next to an oblique impact):
+        // in the internal contacts of the next step its pressure, 1e13 Pa
+        // for a per-cent change of density, handed 2.7e8 J/m^3 to the
+        // steel beside it
+        const equationOfState& eos = phases_.phase(k).eos();
+        rhoRef_[k] = eos.referenceDensity();
+        rhoCompressed_[k] =
+            rhoRef_[k] > 0 ? min(2*rhoRef_[k], eos.rhoMax()) : eos.rhoMax();
+    }
+}
 
 
 Foam::scalar Foam::mechanicalRelaxation::relaxedVolume
@@ -168,6 +186,39 @@ bool Foam::mechanicalRelaxation::interfacePressure
 }
 
 
+Foam::label Foam::mechanicalRelaxation::heaviestActive(const label k) const
+{
+    label heaviest = -1;
+    for (label j = 0; j < nPhases_; ++j)
+    {
+        if (j != k && !trace_[j] && (heaviest < 0 || m_[j] > m_[heaviest]))
+        {
+            heaviest = j;
+        }
+    }
+    return heaviest;
+}
+
+
+void Foam::mechanicalRelaxation::pay
+(
+    const label c,
+    const label payer,
+    const scalar dE
+)
+{
+    if (payer >= 0)
+    {
+        eh0_[payer] -= dE/m_[payer];
+    }
+    else
+    {
+        unpaidEnergy_ += dE*phases_.mesh().V()[c];
+        ++nUnpaid_;
+    }
+}
+
+
 bool Foam::mechanicalRelaxation::vacuumFloor(const label c, const label k)
 {
     // The fluid k is set to pMin + pVacuum at its density, or colder: to
@@ -177,14 +228,6 @@ bool Foam::mechanicalRelaxation::vacuumFloor(const label c, const label k)
     // grow without bound as the density falls, and the time step would
     // collapse with it). The energy this takes comes from the heaviest
     // other phase that is not a trace, if any
-    label payer = -1;
-    for (label j = 0; j < nPhases_; ++j)
-    {
-        if (j != k && !trace_[j] && (payer < 0 || m_[j] > m_[payer]))
-        {
-            payer = j;
-        }
-    }
     const equationOfState& eos = phases_.phase(k).eos();
     const scalar rho = 1/v0_[k];
     const scalar pMin = eos.pMin(rho);
@@ -201,17 +244,9 @@ bool Foam::mechanicalRelaxation::vacuumFloor(const label c, const label k)
         }
     }
 
-    if (payer >= 0)
-    {
-        eh0_[payer] -= m_[k]*(eFloor - eh0_[k])/m_[payer];
-    }
-    else
-    {
-        // The fluid is alone (the other phases traces): the floor adds at
-        // most alpha pVacuum/(gamma - 1) per unit volume, counted
-        unpaidEnergy_ += m_[k]*(eFloor - eh0_[k])*phases_.mesh().V()[c];
-        ++nUnpaid_;
-    }
+    // Alone (the other phases traces), the fluid's floor adds at most
+    // alpha pVacuum/(gamma - 1) per unit volume, counted
+    pay(c, heaviestActive(k), m_[k]*(eFloor - eh0_[k]));
     eh0_[k] = eFloor;
     ++nVacuum_;
     return true;
@@ -413,8 +448,49 @@ Foam::scalar Foam::mechanicalRelaxation::collectMasses
         {
             trace_[k] = true;
         }
+
+        // A minor metal pressed beyond rhoCompressed_ is a trace, and
+        // relaxTraces gives it its reference density
+        if
+        (
+            alpha_[k] < phases_.alphaMinor()
+         && !(m_[k] < rhoCompressed_[k]*alpha_[k])
+        )
+        {
+            trace_[k] = true;
+        }
     }
     return mass;
+}
+
+
+void Foam::mechanicalRelaxation::compactMetals
+(
+    const label c,
+    const label main
+)
+{
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        const scalar rhoRef = rhoRef_[k];
+        if (k == main || !(rhoRef > 0) || !(m_[k] < 0.5*rhoRef*alpha_[k]))
+        {
+            continue;
+        }
+        // A phase with a reference density (a metal) below half of it is
+        // not a state of the material: a metal holds no more than a few
+        // per cent of tension before it fails. The transport leaves such
+        // states where it spreads a metal's volume fraction ahead of its
+        // mass (steel at 0.07 rho0 and alpha 0.0075 in an air cell beside
+        // an oblique impact, at -2e12 Pa, where its Mie-Grueneisen pressure
+        // swings by 1e12 Pa for a one-per-mille change of density). The
+        // metal takes its reference density at its specific energy, the
+        // volume going to the cell's largest phase: only volumes change,
+        // the energy is conserved
+        const scalar dAlpha = m_[k]/rhoRef - alpha_[k];
+        alpha_[k] += dAlpha;
+        alpha_[main] -= dAlpha;
+    }
 }
 
 
@@ -435,7 +511,12 @@ void Foam::mechanicalRelaxation::relaxVelocity
             const scalar detA = A.determinant();
             if (!(detA > 0))
             {
-                if (!trace_[k]) fail(c, k, "det(A)", detA);
+                // A minor solid's cobasis that the transport inverted is
+                // reset (its elastic energy, if any, becomes heat)
+                if (!trace_[k] && !(alpha_[k] < phases_.alphaMinor()))
+                {
+                    fail(c, k, "det(A)", detA);
+                }
                 A = cobasis::unstrained(1/v0_[k], ph.rho0());
             }
             else
@@ -538,11 +619,8 @@ void Foam::mechanicalRelaxation::relaxTraces
 {
     // The energy a trace's reset takes or gives is paid by the heaviest
     // phase that is not a trace (the cell's largest by volume if none)
-    label payer = main;
-    for (label j = 0; j < nPhases_; ++j)
-    {
-        if (!trace_[j] && m_[j] > m_[payer]) payer = j;
-    }
+    label payer = heaviestActive(-1);
+    if (payer < 0) payer = main;
 
     for (label k = 0; k < nPhases_; ++k)
     {
@@ -551,23 +629,12 @@ void Foam::mechanicalRelaxation::relaxTraces
         const equationOfState& eos = ph.eos();
         const scalar rhoRef = eos.referenceDensity();
         const scalar rhoTrace = 1/v0_[k];
-        if
-        (
-            k != main
-         && (
-                !(rhoTrace < eos.rhoMax())
-             || (rhoTrace > 0 && rhoRef > 0 && rhoTrace < 0.5*rhoRef)
-            )
-        )
+        if (k != main && !(rhoTrace < rhoCompressed_[k]))
         {
-            // A trace of a model with a reference density (a metal) that
-            // the transport left beyond rhoMax, or below half its
-            // reference density (its volume fraction does not fit its
-            // mass: a few 1e-7 of metal smeared into a vacuum, where a
-            // Mie-Grueneisen reference curve at eta = -5e4 gives 1e16
-            // J/kg) takes its reference density, the volume exchanged
-            // with the cell's largest phase (at most alphaTrace of the
-            // cell's volume)
+            // A trace that the transport left beyond rhoCompressed_ takes
+            // its reference density (half rhoMax if it has none), the
+            // volume exchanged with the cell's largest phase (below half
+            // the reference density it was compacted, compactMetals)
             const scalar rhoNew = rhoRef > 0 ? rhoRef : 0.5*eos.rhoMax();
             const scalar dAlpha = m_[k]/rhoNew - alpha_[k];
             alpha_[k] += dAlpha;
@@ -597,22 +664,17 @@ void Foam::mechanicalRelaxation::relaxTraces
             ref.first() > 0
           ? ph.eos().eIsentropic(rho, ref.first(), ref.second())
           : ph.eos().e(rho, pk);
-        if (m_[k] < m_[payer])
-        {
-            eh0_[payer] -= m_[k]*(eNew - eh0_[k] - eeOld)/m_[payer];
-        }
-        else
-        {
-            // A trace heavier than every other phase of the cell (metal
-            // debris in a vacuum: alpha 1e-7 next to a gas at rho 1e-11)
-            // is reset without a payer: handing its energy change to a
-            // lighter phase would heat that phase by the ratio of the
-            // masses (a gas at 1e11 Pa, the time step collapsing). The
-            // energy changes by the trace's m (eNew - e), counted
-            unpaidEnergy_ +=
-                m_[k]*(eNew - eh0_[k] - eeOld)*phases_.mesh().V()[c];
-            ++nUnpaid_;
-        }
+        // A trace heavier than every other phase of the cell (metal debris
+        // in a vacuum: alpha 1e-7 next to a gas at rho 1e-11) is reset
+        // without a payer: handing its energy change to a lighter phase
+        // would heat that phase by the ratio of the masses (a gas at 1e11
+        // Pa, the time step collapsing)
+        pay
+        (
+            c,
+            m_[k] < m_[payer] ? payer : -1,
+            m_[k]*(eNew - eh0_[k] - eeOld)
+        );
         eh0_[k] = eNew;
     }
 }
@@ -752,6 +814,7 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
         const label main = floorVolumeFractions(c, q);
         cobasis::vector mom;
         const scalar mass = collectMasses(c, q, mom);
+        compactMetals(c, main);
 
         // 2. One velocity; the cobasis made compatible with the density
         const cobasis::vector u(mom/mass);
