@@ -85,6 +85,42 @@ Foam::cobasis::matrix Foam::elasticModels::separable::dS
     const cobasis::matrix& dA
 ) const
 {
+    // S = -mu r B(g), r = det A, g = s G, G = A^T A, s = (det A)^(-2/3),
+    // B = c1 j1 (g - j1/3 I) + a (g^2 - j2/3 I), c1 = (1 - 2a)/3.
+    // With t = tr(A^-1 dA) (so d det A = t det A):
+    //   dG = dA^T A + A^T dA,   dg = s (dG - 2/3 t G),   dr = t r,
+    //   dj1 = tr dg,   dj2 = 2 tr(g dg),
+    //   dB = c1 (dj1 (g - j1/3 I) + j1 (dg - dj1/3 I))
+    //      + a (dg g + g dg - dj2/3 I),
+    //   dS = -mu (dr B + r dB)
+    typedef cobasis::matrix M;
+    const M I = M::Identity();
+    const scalar r = A.determinant();
+    const scalar t = (A.inverse()*dA).trace();
+    const scalar s = std::cbrt(1/(r*r));
+    const M G = A.transpose()*A;
+    const M g = s*G;
+    const M dg = s*(dA.transpose()*A + A.transpose()*dA - (2.0/3.0*t)*G);
+    const M gdg = g*dg;
+    const scalar j1 = g.trace();
+    const scalar j2 = (g*g).trace();
+    const scalar dj1 = dg.trace();
+    const scalar dj2 = 2*gdg.trace();
+    const scalar c1 = (1 - 2*a_)/3;
+    const M B = (c1*j1)*(g - (j1/3)*I) + a_*(g*g - (j2/3)*I);
+    const M dB =
+        c1*(dj1*(g - (j1/3)*I) + j1*(dg - (dj1/3)*I))
+      + a_*(dg*g + gdg - (dj2/3)*I);
+    return (-mu_)*((t*r)*B + r*dB);
+}
+
+
+Foam::cobasis::matrix Foam::elasticModels::separable::dSComplexStep
+(
+    const cobasis::matrix& A,
+    const cobasis::matrix& dA
+) const
+{
     typedef std::complex<double> cplx;
 
     const double h = 1e-30;
