@@ -13,6 +13,7 @@ Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
     nPhases_(phases.size()),
     rhoRef_(nPhases_),
     rhoCompressed_(nPhases_),
+    rhoVacuum_(nPhases_, 0),
     m_(nPhases_),
     v0_(nPhases_),
     eh0_(nPhases_),
@@ -43,6 +44,26 @@ Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
         rhoRef_[k] = eos.referenceDensity();
         rhoCompressed_[k] =
             rhoRef_[k] > 0 ? min(2*rhoRef_[k], eos.rhoMax()) : eos.rhoMax();
+
+        // A gas at the edge of a vacuum (behind a body faster than its
+        // escape speed, or among debris) holds next to no mass, and its
+        // specific energy, a small difference of large numbers, can take
+        // any value: air at 2e-12 kg/m^3 and 300 Pa (the library copper
+        // at 6 km/s, 25 us) has a sound speed of 1.5e7 m/s, and the time
+        // step collapsed. Below the density at which its reference
+        // isentrope falls to the floor pMin + pVacuum (3.3e-4 kg/m^3 for
+        // air from 1.2 kg/m^3 and 1e5 Pa) it is held at most on that
+        // isentrope, where its sound speed falls with its density
+        const Pair<scalar>& ref = phases_.referenceIsentrope(k);
+        if (phases_.pVacuum() >= 0 && ref.first() > 0)
+        {
+            const scalar pFloor = eos.pMin(ref.first()) + phases_.pVacuum();
+            if (pFloor > eos.pIsentropicMin(ref.first(), ref.second()))
+            {
+                rhoVacuum_[k] =
+                    1/eos.vIsentropic(pFloor, ref.first(), ref.second());
+            }
+        }
     }
 }
 
@@ -183,6 +204,22 @@ bool Foam::mechanicalRelaxation::interfacePressure
         p = pNew;
     }
     return false;
+}
+
+
+void Foam::mechanicalRelaxation::vacuumCap(const label c, const label k)
+{
+    const Pair<scalar>& ref = phases_.referenceIsentrope(k);
+    const scalar eIs = phases_.phase(k).eos().eIsentropic
+    (
+        1/v0_[k], ref.first(), ref.second()
+    );
+    if (eh0_[k] > eIs)
+    {
+        pay(c, heaviestActive(k), m_[k]*(eIs - eh0_[k]));
+        eh0_[k] = eIs;
+        ++nVacuum_;
+    }
 }
 
 
@@ -572,6 +609,10 @@ void Foam::mechanicalRelaxation::screenEnergies
             {
                 fail(c, k, "p", pk);
             }
+        }
+        else if (1/v0_[k] < rhoVacuum_[k])
+        {
+            vacuumCap(c, k);
         }
     }
 }

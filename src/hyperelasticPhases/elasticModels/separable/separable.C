@@ -115,6 +115,60 @@ Foam::cobasis::matrix Foam::elasticModels::separable::dS
 }
 
 
+Foam::cobasis::matrix Foam::elasticModels::separable::Qe
+(
+    const cobasis::matrix& A,
+    const cobasis::vector& n
+) const
+{
+    // Column k is dS[dA_k] n with dA_k = -(A e_k) (x) n (dS above): then
+    // t = tr(A^-1 dA_k) = -n_k and dG = -(n (x) G_k + G_k (x) n), G_k the
+    // k-th column of G, so every term of dS[dA_k] n is a vector:
+    //   dg v  = s (-(n (G_k . v) + G_k (n . v)) - 2/3 t G v),
+    //   dj1   = s (-2 G_k . n - 2/3 t tr G),
+    //   dj2   = 2 s (-2 G_k . (g n) - 2/3 t tr(g G)),
+    //   dB n  = c1 (dj1 (g n - j1/3 n) + j1 (dg n - dj1/3 n))
+    //         + a (dg (g n) + g (dg n) - dj2/3 n),
+    //   dS n  = -mu r (t B n + dB n)
+    typedef cobasis::matrix M;
+    typedef cobasis::vector V;
+    const scalar r = A.determinant();
+    const scalar s = std::cbrt(1/(r*r));
+    const M G = A.transpose()*A;
+    const M g = s*G;
+    const scalar j1 = g.trace();
+    const scalar j2 = g.cwiseProduct(g).sum();
+    const scalar trG = G.trace();
+    const scalar trgG = g.cwiseProduct(G).sum();
+    const scalar c1 = (1 - 2*a_)/3;
+    const V gn = g*n;
+    const V Gn = G*n;
+    const V Ggn = G*gn;
+    const scalar nn = n.squaredNorm();
+    const scalar ngn = n.dot(gn);
+    // B n, B = c1 j1 (g - j1/3 I) + a (g^2 - j2/3 I)
+    const V Bn = (c1*j1)*(gn - (j1/3)*n) + a_*(g*gn - (j2/3)*n);
+
+    M Q;
+    for (int k = 0; k < 3; ++k)
+    {
+        const scalar t = -n(k);
+        const V Gk = G.col(k);
+        const scalar Gkn = Gk.dot(n);
+        const scalar Gkgn = Gk.dot(gn);
+        const V dgn = s*(-(Gkn*n + nn*Gk) - (2.0/3.0*t)*Gn);
+        const V dggn = s*(-(Gkgn*n + ngn*Gk) - (2.0/3.0*t)*Ggn);
+        const scalar dj1 = s*(-2*Gkn - 2.0/3.0*t*trG);
+        const scalar dj2 = 2*s*(-2*Gkgn - 2.0/3.0*t*trgG);
+        const V dBn =
+            c1*(dj1*(gn - (j1/3)*n) + j1*(dgn - (dj1/3)*n))
+          + a_*(dggn + g*dgn - (dj2/3)*n);
+        Q.col(k) = (-mu_*r)*(t*Bn + dBn);
+    }
+    return 0.5*(Q + Q.transpose());
+}
+
+
 Foam::cobasis::matrix Foam::elasticModels::separable::dSComplexStep
 (
     const cobasis::matrix& A,
