@@ -68,6 +68,7 @@ VACUUM_BOUND = 0.01
 P_VACUUM = 100.0                  # the isentrope run's pVacuum
 RHO_VAC = RHO0 * (P_VACUUM / P0) ** (1 / GAMMA)
 ISENTROPE_TOL = 1e-9
+E0 = P0 / ((GAMMA - 1) * RHO0) + 0.5 * U0**2
 CONSERVATION_TOL = 1e-10
 
 checks = Checks()
@@ -106,7 +107,34 @@ def run(n, isentrope=False):
         "u": fc.read_field(case, t, "U")[:, 0],
     }
     log = open(os.path.join(case, "log.impactFoam")).read()
-    return x, fields, log, wall
+    idx = np.argsort(x)
+    return x[idx], {k: v[idx] for k, v in fields.items()}, log, wall
+
+
+def l1_errors(exact, f, n):
+    """Relative L1 errors of rho, p and u against the exact cell averages;
+    u where the exact state has matter (rho above 1e-3 rho0 over the whole
+    cell)."""
+    dx = L / n
+    edges = np.linspace(0.0, L, n + 1)
+    rho_e, u_e, p_e, _ = exact.cell_averages(edges, T_END, x0=X0)
+    m = np.isfinite(u_e) & (rho_e > 1e-3 * RHO0)
+    return {"rho": rel_l1(f["rho"], rho_e, dx), "p": rel_l1(f["p"], p_e, dx),
+            "u": rel_l1(f["u"][m], u_e[m], dx)}
+
+
+def conservation_residuals(f, n, added=0.0):
+    """Mass and total energy per unit area against the initial content
+    minus the outflow at both ends (the fans stay inside, the boundary
+    states are the initial ones), plus the energy added per unit area."""
+    dx = L / n
+    mass = np.sum(f["rho"]) * dx
+    e_int = f["p"] / ((GAMMA - 1) * f["rho"])
+    energy = np.sum(f["rho"] * (e_int + 0.5 * f["u"]**2)) * dx
+    mass_ref = RHO0 * L - 2 * RHO0 * U0 * T_END
+    energy_ref = RHO0 * E0 * L - 2 * (RHO0 * E0 + P0) * U0 * T_END + added
+    return (abs(mass - mass_ref) / mass_ref,
+            abs(energy - energy_ref) / energy_ref)
 
 
 def hot_cells(x, f):
@@ -125,15 +153,7 @@ def check_isentrope_run(exact, plain_hot):
     except fc.FoamError as e:
         checks.fail(tag + "_run", e.summary)
         return
-    idx = np.argsort(x)
-    x = x[idx]
-    f = {k: v[idx] for k, v in f.items()}
-    dx = L / n
-    edges = np.linspace(0.0, L, n + 1)
-    rho_e, u_e, p_e, _ = exact.cell_averages(edges, T_END, x0=X0)
-    m = np.isfinite(u_e) & (rho_e > 1e-3 * RHO0)
-    e = {"rho": rel_l1(f["rho"], rho_e, dx), "p": rel_l1(f["p"], p_e, dx),
-         "u": rel_l1(f["u"][m], u_e[m], dx)}
+    e = l1_errors(exact, f, n)
     checks.check(tag + "_L1", all(e[q] < BOUNDS[q] for q in BOUNDS),
                  "relative L1 error with the vacuum cap: rho %.3e, p %.3e, "
                  "u %.3e (bounds %g, %g, %g)"
@@ -153,16 +173,8 @@ def check_isentrope_run(exact, plain_hot):
                              log).group(1))
     added = float(re.findall(r"energy added without a payer (\S+) J",
                              log)[-1])
-    E0 = P0 / ((GAMMA - 1) * RHO0) + 0.5 * U0**2
     area = e0_log / (RHO0 * E0 * L)
-    mass = np.sum(f["rho"]) * dx
-    energy = np.sum(f["rho"] * (f["p"] / ((GAMMA - 1) * f["rho"])
-                                + 0.5 * f["u"]**2)) * dx
-    mass_ref = RHO0 * L - 2 * RHO0 * U0 * T_END
-    energy_ref = (RHO0 * E0 * L - 2 * (RHO0 * E0 + P0) * U0 * T_END
-                  + added / area)
-    dm = abs(mass - mass_ref) / mass_ref
-    dE = abs(energy - energy_ref) / energy_ref
+    dm, dE = conservation_residuals(f, n, added / area)
     checks.check(tag + "_conservation",
                  dm < CONSERVATION_TOL and dE < CONSERVATION_TOL,
                  "mass %.3e, total energy %.3e relative to the initial "
@@ -195,12 +207,7 @@ def main():
         except fc.FoamError as e:
             checks.fail(tag + "_run", e.summary)
             checks.exit()
-        idx = np.argsort(x)
-        x = x[idx]
-        f = {k: v[idx] for k, v in f.items()}
         dx = L / n
-        edges = np.linspace(0.0, L, n + 1)
-        rho_e, u_e, p_e, _ = exact.cell_averages(edges, T_END, x0=X0)
 
         finite = all(np.all(np.isfinite(v)) for v in f.values())
         checks.check(tag + "_admissible", finite and f["rho"].min() > 0
@@ -209,26 +216,13 @@ def main():
                      "(%d cells, %.1f s)" % (finite, f["rho"].min(),
                                              f["p"].min(), n, wall))
 
-        errors["rho"].append(rel_l1(f["rho"], rho_e, dx))
-        errors["p"].append(rel_l1(f["p"], p_e, dx))
-        # u where the exact state has matter (rho above 1e-3 rho0 over
-        # the whole cell)
-        m = np.isfinite(u_e) & (rho_e > 1e-3 * RHO0)
-        errors["u"].append(rel_l1(f["u"][m], u_e[m], dx))
+        for q, v in l1_errors(exact, f, n).items():
+            errors[q].append(v)
 
         in_vacuum = np.abs(x - X0) < -exact.waves["left"][2] * T_END - dx
         vacuum_max.append(f["rho"][in_vacuum].max() / RHO0)
 
-        # Conservation against the outflow at both ends (the fans stay
-        # inside, the boundary states are the initial ones)
-        mass = np.sum(f["rho"]) * dx
-        e_int = f["p"] / ((GAMMA - 1) * f["rho"])
-        energy = np.sum(f["rho"] * (e_int + 0.5 * f["u"]**2)) * dx
-        E0 = P0 / ((GAMMA - 1) * RHO0) + 0.5 * U0**2
-        mass_ref = RHO0 * L - 2 * RHO0 * U0 * T_END
-        energy_ref = RHO0 * E0 * L - 2 * (RHO0 * E0 + P0) * U0 * T_END
-        dm = abs(mass - mass_ref) / mass_ref
-        dE = abs(energy - energy_ref) / energy_ref
+        dm, dE = conservation_residuals(f, n)
         checks.check(tag + "_conservation",
                      dm < CONSERVATION_TOL and dE < CONSERVATION_TOL,
                      "mass %.3e, total energy %.3e relative to the initial "
