@@ -69,7 +69,7 @@ void Foam::boundaryFaceStates::update
             }
             else
             {
-                rec.faceState(fc[facei], d, own[facei]);
+                rec.faceState(fc[facei], meshFacei, d, own[facei]);
             }
             for (label k = 0; k < nPhases_; ++k)
             {

@@ -93,8 +93,8 @@ void Foam::demSolver::internalFaces()
         }
         else
         {
-            rec.faceState(o, Cf[facei] - C[o], faceO_);
-            rec.faceState(nb, Cf[facei] - C[nb], faceN_);
+            rec.faceState(o, facei, Cf[facei] - C[o], faceO_);
+            rec.faceState(nb, facei, Cf[facei] - C[nb], faceN_);
         }
 
         assembly_.solveFace(faceO_, faceN_, frames_[facei], fallback);
@@ -178,7 +178,7 @@ void Foam::demSolver::boundaryFaces()
                 }
                 else
                 {
-                    rec.faceState(celli, d, cellFace);
+                    rec.faceState(celli, facei, d, cellFace);
                 }
             }
             // (a wedge face is never coupled: its rotation below acts on

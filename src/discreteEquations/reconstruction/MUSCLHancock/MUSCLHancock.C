@@ -29,6 +29,7 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
 :
     reconstruction(phases, cells, dict),
     alphaCompression_(dict.getOrDefault<scalar>("alphaCompression", 1)),
+    thinc_(),
     cobasisLimiter_(),
     slopes_(nPhases_),
     alphaScratch_(nPhases_)
@@ -38,6 +39,41 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
         FatalIOErrorInFunction(dict)
             << "discreteEquations alphaCompression " << alphaCompression_
             << " is not in [1, 4]" << exit(FatalIOError);
+    }
+
+    const word alphaRec
+    (
+        dict.getOrDefault<word>("alphaReconstruction", "linear")
+    );
+    if (alphaRec != "linear" && alphaRec != "THINC")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown discreteEquations alphaReconstruction " << alphaRec
+            << "; valid: (linear THINC)" << exit(FatalIOError);
+    }
+    if (alphaRec == "THINC")
+    {
+        if (alphaCompression_ != 1)
+        {
+            FatalIOErrorInFunction(dict)
+                << "discreteEquations: alphaCompression " << alphaCompression_
+                << " steepens linear volume fraction slopes; with"
+                << " alphaReconstruction THINC leave it out (or 1)"
+                << exit(FatalIOError);
+        }
+        const scalar beta =
+            dict.optionalSubDict("THINCCoeffs").getOrDefault<scalar>
+            (
+                "beta",
+                1.6
+            );
+        if (!(beta >= 0.5 && beta <= 10))
+        {
+            FatalIOErrorInFunction(dict)
+                << "discreteEquations THINCCoeffs beta " << beta
+                << " is not in [0.5, 10]" << exit(FatalIOError);
+        }
+        thinc_.reset(new THINC(beta));
     }
 
     const word limiter
@@ -160,6 +196,94 @@ void Foam::reconstructions::MUSCLHancock::compressAlphaSlopes
 
 
 
+void Foam::reconstructions::MUSCLHancock::setProfile
+(
+    const label c,
+    const scalar alpha,
+    const scalar aMin,
+    const scalar aMax,
+    const vector& g,
+    const vector& U,
+    const scalar halfDt,
+    cellSlopes& sl
+) const
+{
+    sl.sharp = false;
+    const scalar aRange = aMax - aMin;
+    const scalar magG = mag(g);
+    if
+    (
+        alpha < phases_.alphaMinor()
+     || aRange < phases_.alphaMinor()
+     || magG < VSMALL
+    )
+    {
+        return;
+    }
+    // Normalised value: an interface cell lies strictly within the range
+    const scalar aBar = (alpha - aMin)/aRange;
+    if (!(aBar > 1e-4 && aBar < 1 - 1e-4))
+    {
+        return;
+    }
+
+    const vector n(g/magG);
+    const pointField& pts = mesh_.points();
+    scalar lo = GREAT;
+    scalar hi = -GREAT;
+    for (const label pi : mesh_.cellPoints()[c])
+    {
+        const scalar x = n & pts[pi];
+        lo = min(lo, x);
+        hi = max(hi, x);
+    }
+
+    sl.sharp = true;
+    sl.nAlpha = toEigen(n);
+    sl.xLow = lo;
+    sl.h = hi - lo;
+    sl.xiJ = thinc_->jump(aBar);
+    sl.xiShift = (U & n)*halfDt/sl.h;
+    sl.aLow = aMin;
+    sl.aRange = aRange;
+
+    // The time-centred cell value: the mean of the profile moved by half
+    // a step
+    sl.dtAlpha =
+        aMin + aRange*thinc_->mean(-sl.xiShift, 1 - sl.xiShift, sl.xiJ)
+      - alpha;
+}
+
+
+Foam::scalar Foam::reconstructions::MUSCLHancock::profileFaceAlpha
+(
+    const cellSlopes& sl,
+    const label celli,
+    const label facei,
+    const vector& d
+) const
+{
+    // The face's spread along n from its points, its centre from d (on a
+    // wedge face d is the centre turned into the cell's plane)
+    const pointField& pts = mesh_.points();
+    const vector n(sl.nAlpha(0), sl.nAlpha(1), sl.nAlpha(2));
+    scalar lo = GREAT;
+    scalar hi = -GREAT;
+    for (const label pi : mesh_.faces()[facei])
+    {
+        const scalar x = n & pts[pi];
+        lo = min(lo, x);
+        hi = max(hi, x);
+    }
+    const scalar xiC =
+        ((n & (mesh_.cellCentres()[celli] + d)) - sl.xLow)/sl.h - sl.xiShift;
+    const scalar halfW = 0.5*(hi - lo)/sl.h;
+    return
+        sl.aLow
+      + sl.aRange*thinc_->mean(xiC - halfW, xiC + halfW, sl.xiJ);
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::reconstructions::MUSCLHancock::centreAlphas
@@ -197,6 +321,10 @@ void Foam::reconstructions::MUSCLHancock::describe(Ostream& os) const
     if (alphaCompression_ > 1)
     {
         os  << ", volume fraction slopes steepened by " << alphaCompression_;
+    }
+    if (thinc_.valid())
+    {
+        os  << ", THINC volume fractions (beta " << thinc_->beta() << ")";
     }
 }
 
@@ -308,6 +436,15 @@ void Foam::reconstructions::MUSCLHancock::update
                 first ? cobasis::vector::Zero() : toEigen(gAlpha[c]);
             sl.dtAlpha = -halfDt*u.dot(sl.gAlpha);
             sl.minor = minAlpha[c] < phases_.alphaMinor();
+            sl.sharp = false;
+            if (thinc_.valid() && !first)
+            {
+                setProfile
+                (
+                    c, alpha[c], minAlpha[c], maxAlpha[c], gAlpha[c], U[c],
+                    halfDt, sl
+                );
+            }
 
             if (sl.minor || first)
             {
@@ -395,6 +532,7 @@ void Foam::reconstructions::MUSCLHancock::update
 void Foam::reconstructions::MUSCLHancock::faceState
 (
     const label celli,
+    const label facei,
     const vector& d,
     std::vector<phaseSide>& s
 ) const
@@ -417,10 +555,14 @@ void Foam::reconstructions::MUSCLHancock::faceState
         if (k == main) continue;
         const scalar ac = phases_.alpha(k)[celli];
         const cellSlopes& sl = slopes_[k][celli];
+        const scalar af =
+            sl.sharp
+          ? profileFaceAlpha(sl, celli, facei, d)
+          : ac + sl.gAlpha.dot(de) + sl.dtAlpha;
         alphaScratch_[k] =
             ac < phases_.alphaMinor()
           ? ac
-          : min(max(ac + sl.gAlpha.dot(de) + sl.dtAlpha, alphaMin), 1 - alphaMin);
+          : min(max(af, alphaMin), 1 - alphaMin);
         sumAlpha += alphaScratch_[k];
     }
     if (sumAlpha > 1 - alphaMin)

@@ -40,6 +40,7 @@ void Foam::reconstructions::firstOrder::update
 void Foam::reconstructions::firstOrder::faceState
 (
     const label celli,
+    const label,
     const vector& d,
     std::vector<phaseSide>& s
 ) const
