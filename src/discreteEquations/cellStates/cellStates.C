@@ -41,9 +41,9 @@ void Foam::cellStates::update()
         for (label celli = 0; celli < nCells; ++celli)
         {
             const cobasis::matrix Ac(toEigen(A[celli]));
-            sigma_[k][celli] = ph.sigma(p[celli], Ac);
-            E_[k][celli] =
-                ph.e(rho[celli], p[celli], Ac) + 0.5*magSqr(U[celli]);
+            double e;
+            ph.sigmaAndE(rho[celli], p[celli], Ac, sigma_[k][celli], e);
+            E_[k][celli] = e + 0.5*magSqr(U[celli]);
 
             // The acoustic eigenproblem for the phases that set the time
             // step; a minor phase (a trace is unstrained) takes the

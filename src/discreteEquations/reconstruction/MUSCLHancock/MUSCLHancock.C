@@ -575,6 +575,7 @@ void Foam::reconstructions::MUSCLHancock::faceState
     }
     alphaScratch_[main] = 1 - sumAlpha;
 
+    const bool first = firstOrderCell(celli);
     for (label k = 0; k < nPhases_; ++k)
     {
         const cellSlopes& sl = slopes_[k][celli];
@@ -587,6 +588,25 @@ void Foam::reconstructions::MUSCLHancock::faceState
 
         sk.alpha = alphaScratch_[k];
         cellCarried(k, celli, sk);
+
+        if (sl.minor && !first)
+        {
+            // No slopes: the cell state, moved by the body acceleration
+            // only; its stress, energy and wave speed are the cell's
+            sk.rho = rhoc;
+            sk.p = pc;
+            sk.U = toEigen(Uc) + sl.dtU;
+            sk.A = Ac;
+            sk.solid = ph.solid();
+            sk.trace = sk.alpha < phases_.alphaTrace();
+            sk.cT = std::sqrt(ph.cT2());
+            sk.sigma = cells_.sigma(k, celli);
+            sk.E =
+                cells_.E(k, celli)
+              + 0.5*(sk.U.squaredNorm() - magSqr(Uc));
+            sk.a = cells_.a(k, celli);
+            continue;
+        }
         sk.rho = rhoc + sl.gRho.dot(de) + sl.dtRho;
         sk.p = pc + sl.gP.dot(de) + sl.dtP;
         sk.U = toEigen(Uc) + sl.gU.transpose()*de + sl.dtU;

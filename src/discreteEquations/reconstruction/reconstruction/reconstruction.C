@@ -58,8 +58,9 @@ void Foam::reconstruction::completeSide(const label k, phaseSide& s) const
     s.solid = ph.solid();
     s.trace = s.alpha < phases_.alphaTrace();
     s.cT = std::sqrt(ph.cT2());
-    s.sigma = ph.sigma(s.p, s.A);
-    s.E = ph.e(s.rho, s.p, s.A) + 0.5*s.U.squaredNorm();
+    double e;
+    ph.sigmaAndE(s.rho, s.p, s.A, s.sigma, e);
+    s.E = e + 0.5*s.U.squaredNorm();
 }
 
 
