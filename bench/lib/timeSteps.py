@@ -7,7 +7,8 @@ Usage:
         every "Time = ..." line it prints, the wall-clock instant (monotonic
         clock, seconds since the start) and the solver process's CPU time
         (user + system, from /proc/<pid>/stat, 10 ms ticks) to TIMES as
-        "<wall> <cpu> <line>". Exits with the solver's status.
+        "<wall> <cpu> <line>", and at the end the process's peak resident
+        memory ("<maxrss KB>", from wait4). Exits with the solver's status.
 
     timeSteps.py summary TIMES CELLS WARMUP
         Print one JSON object describing the time loop:
@@ -26,6 +27,9 @@ Usage:
                        else null
           dtMin, dtMax, coMax  step sizes and largest Courant number printed
                        (impactFoam) over the timed steps
+          maxRssKb     peak resident memory of the process in kB (of
+                       mpirun itself, not its ranks, for a parallel run;
+                       null if not recorded)
 
 The timed window: both solvers print "Time = t" at the start of a step, so
 the interval between consecutive "Time =" lines is one whole step. The first
@@ -84,8 +88,11 @@ def run(logName, timesName, command):
             elif EXEC_TIME.match(line) or line.startswith("End"):
                 times.write("%.6f nan %s" % (now, line))
             log.write(line)
-        status = proc.wait()
-        times.write("%.6f nan <exit %d>\n" % (time.perf_counter() - start, status))
+        _, raw, usage = os.wait4(proc.pid, 0)
+        proc.returncode = status = os.waitstatus_to_exitcode(raw)
+        end = time.perf_counter() - start
+        times.write("%.6f nan <maxrss %d>\n" % (end, usage.ru_maxrss))
+        times.write("%.6f nan <exit %d>\n" % (end, status))
     return status
 
 
@@ -95,6 +102,7 @@ def summary(timesName, cells, warmup):
     dts = []
     cos = []
     total = None
+    maxRss = None
     lastTime = None
     with open(timesName) as f:
         for raw in f:
@@ -120,6 +128,8 @@ def summary(timesName, cells, warmup):
                 execTimes.append(float(e.group(1)))
             if line.startswith("<exit"):
                 total = wall
+            if line.startswith("<maxrss"):
+                maxRss = int(line.split()[1].rstrip(">"))
 
     steps = len(stamps)
     first = warmup          # index of the "Time =" line of step warmup+1
@@ -156,6 +166,7 @@ def summary(timesName, cells, warmup):
         "dtMin": min(dts[first:last]),
         "dtMax": max(dts[first:last]),
         "coMax": max(cos[first:last]) if len(cos) >= last else None,
+        "maxRssKb": maxRss,
     }))
 
 

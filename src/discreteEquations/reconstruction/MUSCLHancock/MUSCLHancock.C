@@ -196,6 +196,85 @@ void Foam::reconstructions::MUSCLHancock::compressAlphaSlopes
 
 
 
+void Foam::reconstructions::MUSCLHancock::cobasisSlopes
+(
+    const volTensorField& A
+)
+{
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& Sf = mesh_.Sf();
+    const scalarField& w = mesh_.weights();
+    const tensorField& Ai = A.primitiveField();
+
+    for (int i = 0; i < 3; ++i)
+    {
+        dAdx_[i].resize(mesh_.nCells());
+        dAdx_[i] = Zero;
+    }
+
+    // Adds S_i A_f to cell c's sum of direction i
+    const auto add = [this](const label c, const vector& S, const tensor& Af)
+    {
+        for (int i = 0; i < 3; ++i)
+        {
+            dAdx_[i][c] += S[i]*Af;
+        }
+    };
+
+    forAll(nei, facei)
+    {
+        const tensor Af
+        (
+            w[facei]*(Ai[own[facei]] - Ai[nei[facei]]) + Ai[nei[facei]]
+        );
+        add(own[facei], Sf[facei], Af);
+        for (int i = 0; i < 3; ++i)
+        {
+            dAdx_[i][nei[facei]] -= Sf[facei][i]*Af;
+        }
+    }
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh_.boundary()[patchi];
+        const labelUList& fc = patch.faceCells();
+        const vectorField& pSf = mesh_.Sf().boundaryField()[patchi];
+        const fvPatchTensorField& pA = A.boundaryField()[patchi];
+        if (pA.coupled())
+        {
+            const scalarField& pw = mesh_.weights().boundaryField()[patchi];
+            const tensorField nbr(pA.patchNeighbourField());
+            forAll(fc, facei)
+            {
+                add
+                (
+                    fc[facei],
+                    pSf[facei],
+                    pw[facei]*Ai[fc[facei]] + (1 - pw[facei])*nbr[facei]
+                );
+            }
+        }
+        else
+        {
+            forAll(fc, facei)
+            {
+                add(fc[facei], pSf[facei], pA[facei]);
+            }
+        }
+    }
+
+    const scalarField& V = mesh_.V();
+    for (int i = 0; i < 3; ++i)
+    {
+        forAll(V, c)
+        {
+            dAdx_[i][c] /= V[c];
+        }
+    }
+}
+
+
 void Foam::reconstructions::MUSCLHancock::setProfile
 (
     const label c,
@@ -384,41 +463,38 @@ void Foam::reconstructions::MUSCLHancock::update
 
         // Cobasis slopes: Gauss linear (the face values of A's boundary
         // conditions), limited with mirror neighbours
-        PtrList<volVectorField> gA(ph.solid() ? 9 : 0);
-        forAll(gA, cmpt)
+        if (ph.solid())
         {
-            gA.set
-            (
-                cmpt,
-                fv::gaussGrad<scalar>::gradf
-                (
-                    linearInterpolate(A.component(cmpt)()),
-                    "gradA"
-                ).ptr()
-            );
+            cobasisSlopes(A);
         }
         if (ph.solid() && cobasisLimiter_.valid())
         {
             cobasisLimiter_->factors
             (
                 A,
-                [&gA](const label celli, const vector& dx)
+                [this](const label celli, const vector& dx)
                 {
                     tensor dA;
                     for (direction cmpt = 0; cmpt < 9; ++cmpt)
                     {
-                        dA[cmpt] = dx & gA[cmpt][celli];
+                        dA[cmpt] =
+                            dx.x()*dAdx_[0][celli][cmpt]
+                          + dx.y()*dAdx_[1][celli][cmpt]
+                          + dx.z()*dAdx_[2][celli][cmpt];
                     }
                     return dA;
                 },
                 limiterA
             );
-            forAll(gA, cmpt)
+            for (int i = 0; i < 3; ++i)
             {
-                vectorField& g = gA[cmpt].primitiveFieldRef();
+                tensorField& g = dAdx_[i];
                 forAll(g, celli)
                 {
-                    g[celli] *= limiterA[celli][cmpt];
+                    for (direction cmpt = 0; cmpt < 9; ++cmpt)
+                    {
+                        g[celli][cmpt] *= limiterA[celli][cmpt];
+                    }
                 }
             }
         }
@@ -477,10 +553,7 @@ void Foam::reconstructions::MUSCLHancock::update
             {
                 if (ph.solid())
                 {
-                    for (int cmpt = 0; cmpt < 9; ++cmpt)
-                    {
-                        sl.gA[i](cmpt/3, cmpt%3) = gA[cmpt][c][i];
-                    }
+                    sl.gA[i] = toEigen(dAdx_[i][c]);
                 }
                 else
                 {
