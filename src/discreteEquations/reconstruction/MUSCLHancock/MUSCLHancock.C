@@ -65,7 +65,7 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
             dict.optionalSubDict("THINCCoeffs").getOrDefault<scalar>
             (
                 "beta",
-                1.6
+                2.5
             );
         if (!(beta >= 0.5 && beta <= 10))
         {
