@@ -63,7 +63,7 @@ Checks per run (VALIDATION V1):
     the tetrahedra along the diagonal) keep every check above; the 1-D slab
     is at most 0.6 times as smeared as with the linear slopes, the
     hexahedra no more, the simplices at most 1.2 times (THINC does not
-    sharpen there, docs/numerics.md 5.4).
+    sharpen there, docs/numerics.md 5.11).
 """
 import os
 import re
@@ -121,7 +121,7 @@ MG_COPPER = ("equationOfState { type MieGruneisen; rho0 8930; c0 3940; "
 # THINC's smearing over the linear slopes' (at most): half on the 1-D
 # slab; on the 2-D hexahedra it must not smear more (the disc's staircase
 # start dominates 500 steps); on triangles and tetrahedra THINC does not
-# sharpen (docs/numerics.md 5.4: measured 1.11 and 1.12 x), the bound
+# sharpen (docs/numerics.md 5.11: measured 1.11 and 1.12 x), the bound
 # guards against worse
 THINC_WIDTH = {"1D": 0.6, "skewed": 1.0, "triangles": 1.2, "tets": 1.2}
 RUN_TIMEOUT = 120       # seconds per solver run (normal: 0.3-10 s)

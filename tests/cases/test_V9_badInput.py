@@ -126,6 +126,7 @@ def copy_field(case, src, dst):
 
 
 PP = "constant/phaseProperties"
+FS = "system/fvSchemes"
 
 # OFHC copper (MATERIALS.md section 3) in place of 'sigmaY 3e8;'
 JC = ("yieldStress { type JohnsonCook; A 9e7; B 2.92e8; n 0.31; C 0.025; "
@@ -210,6 +211,23 @@ BAD_INPUT = [
                 set_uniform(c, "rho.copper", 30000)),
      [r"copper", r"rho = 30000", r"rho < 27100\.4"],
      "Mie-Grueneisen copper starting at rho 30000 > rhoMax = 27100"),
+    ("unknownAlphaReconstruction",
+     lambda c: edit(c, FS, "riemannSolver   HLLC;",
+                    "riemannSolver   HLLC; alphaReconstruction sharp;"),
+     [r"alphaReconstruction", r"\bsharp\b", r"THINC"],
+     "alphaReconstruction sharp"),
+    ("thincBeta",
+     lambda c: edit(c, FS, "riemannSolver   HLLC;",
+                    "riemannSolver   HLLC; alphaReconstruction THINC;"
+                    " THINCCoeffs { beta 20; }"),
+     [r"THINCCoeffs", r"beta 20", r"\[0\.5, 10\]"],
+     "THINC beta 20"),
+    ("thincWithCompression",
+     lambda c: edit(c, FS, "riemannSolver   HLLC;",
+                    "riemannSolver   HLLC; alphaReconstruction THINC;"
+                    " alphaCompression 2;"),
+     [r"alphaCompression 2", r"THINC"],
+     "THINC with alphaCompression 2"),
 ]
 
 

@@ -1,5 +1,5 @@
 /*---------------------------------------------------------------------------*\
-  Unit tests of the THINC profile (docs/numerics.md section 5.4): the jump
+  Unit tests of the THINC profile (docs/numerics.md section 5.11): the jump
   position reproduces the cell's mean, the closed-form mean over an
   interval equals a quadrature of H, the face values lie within (0, 1) and
   grow towards the larger side, and the profile steepens with beta.
