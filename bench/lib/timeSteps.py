@@ -30,6 +30,9 @@ Usage:
           maxRssKb     peak resident memory of the process in kB (of
                        mpirun itself, not its ranks, for a parallel run;
                        null if not recorded)
+          systemShare  system CPU time over user + system time of the
+                       whole run (page faults of freshly allocated
+                       fields show here), null if not recorded
 
 The timed window: both solvers print "Time = t" at the start of a step, so
 the interval between consecutive "Time =" lines is one whole step. The first
@@ -92,6 +95,8 @@ def run(logName, timesName, command):
         proc.returncode = status = os.waitstatus_to_exitcode(raw)
         end = time.perf_counter() - start
         times.write("%.6f nan <maxrss %d>\n" % (end, usage.ru_maxrss))
+        times.write("%.6f nan <rusage %.3f %.3f>\n"
+                    % (end, usage.ru_utime, usage.ru_stime))
         times.write("%.6f nan <exit %d>\n" % (end, status))
     return status
 
@@ -103,6 +108,7 @@ def summary(timesName, cells, warmup):
     cos = []
     total = None
     maxRss = None
+    systemShare = None
     lastTime = None
     with open(timesName) as f:
         for raw in f:
@@ -130,6 +136,10 @@ def summary(timesName, cells, warmup):
                 total = wall
             if line.startswith("<maxrss"):
                 maxRss = int(line.split()[1].rstrip(">"))
+            if line.startswith("<rusage"):
+                user, system = (float(v) for v in
+                                line.rstrip().rstrip(">").split()[1:3])
+                systemShare = system/(user + system) if user + system else None
 
     steps = len(stamps)
     first = warmup          # index of the "Time =" line of step warmup+1
@@ -167,6 +177,7 @@ def summary(timesName, cells, warmup):
         "dtMax": max(dts[first:last]),
         "coMax": max(cos[first:last]) if len(cos) >= last else None,
         "maxRssKb": maxRss,
+        "systemShare": systemShare,
     }))
 
 
