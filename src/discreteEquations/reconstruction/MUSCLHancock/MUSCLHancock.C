@@ -2,8 +2,6 @@
 #include "alphaClosure.H"
 #include "foamEigen.H"
 #include "fvc.H"
-#include "gaussGrad.H"
-#include "linear.H"
 #include "addToRunTimeSelectionTable.H"
 
 using Foam::foamEigen::toEigen;
@@ -275,6 +273,26 @@ void Foam::reconstructions::MUSCLHancock::cobasisSlopes
 }
 
 
+void Foam::reconstructions::MUSCLHancock::extentAlong
+(
+    const labelUList& pointLabels,
+    const vector& n,
+    scalar& lo,
+    scalar& hi
+) const
+{
+    const pointField& pts = mesh_.points();
+    lo = GREAT;
+    hi = -GREAT;
+    for (const label pi : pointLabels)
+    {
+        const scalar x = n & pts[pi];
+        lo = min(lo, x);
+        hi = max(hi, x);
+    }
+}
+
+
 void Foam::reconstructions::MUSCLHancock::setProfile
 (
     const label c,
@@ -287,7 +305,6 @@ void Foam::reconstructions::MUSCLHancock::setProfile
     cellSlopes& sl
 ) const
 {
-    sl.sharp = false;
     const scalar aRange = aMax - aMin;
     const scalar magG = mag(g);
     if
@@ -307,15 +324,8 @@ void Foam::reconstructions::MUSCLHancock::setProfile
     }
 
     const vector n(g/magG);
-    const pointField& pts = mesh_.points();
-    scalar lo = GREAT;
-    scalar hi = -GREAT;
-    for (const label pi : mesh_.cellPoints()[c])
-    {
-        const scalar x = n & pts[pi];
-        lo = min(lo, x);
-        hi = max(hi, x);
-    }
+    scalar lo, hi;
+    extentAlong(mesh_.cellPoints()[c], n, lo, hi);
 
     sl.sharp = true;
     sl.nAlpha = toEigen(n);
@@ -344,16 +354,9 @@ Foam::scalar Foam::reconstructions::MUSCLHancock::profileFaceAlpha
 {
     // The face's spread along n from its points, its centre from d (on a
     // wedge face d is the centre turned into the cell's plane)
-    const pointField& pts = mesh_.points();
     const vector n(sl.nAlpha(0), sl.nAlpha(1), sl.nAlpha(2));
-    scalar lo = GREAT;
-    scalar hi = -GREAT;
-    for (const label pi : mesh_.faces()[facei])
-    {
-        const scalar x = n & pts[pi];
-        lo = min(lo, x);
-        hi = max(hi, x);
-    }
+    scalar lo, hi;
+    extentAlong(mesh_.faces()[facei], n, lo, hi);
     const scalar xiC =
         ((n & (mesh_.cellCentres()[celli] + d)) - sl.xLow)/sl.h - sl.xiShift;
     const scalar halfW = 0.5*(hi - lo)/sl.h;
@@ -652,34 +655,22 @@ void Foam::reconstructions::MUSCLHancock::faceState
     for (label k = 0; k < nPhases_; ++k)
     {
         const cellSlopes& sl = slopes_[k][celli];
-        const hyperelasticPhase& ph = phases_.phase(k);
         phaseSide& sk = s[k];
-
-        const double rhoc = phases_.rho(k)[celli];
-        const double pc = phases_.p(k)[celli];
-        const cobasis::matrix Ac(toEigen(phases_.A(k)[celli]));
-
         sk.alpha = alphaScratch_[k];
-        cellCarried(k, celli, sk);
 
         if (sl.minor && !first)
         {
             // No slopes: the cell state, moved by the body acceleration
             // only; its stress, energy and wave speed are the cell's
-            sk.rho = rhoc;
-            sk.p = pc;
-            sk.U = toEigen(Uc) + sl.dtU;
-            sk.A = Ac;
-            sk.solid = ph.solid();
-            sk.trace = sk.alpha < phases_.alphaTrace();
-            sk.cT = std::sqrt(ph.cT2());
-            sk.sigma = cells_.sigma(k, celli);
-            sk.E =
-                cells_.E(k, celli)
-              + 0.5*(sk.U.squaredNorm() - magSqr(Uc));
-            sk.a = cells_.a(k, celli);
+            cellSide(k, celli, toEigen(Uc) + sl.dtU, sk);
             continue;
         }
+
+        const hyperelasticPhase& ph = phases_.phase(k);
+        const double rhoc = phases_.rho(k)[celli];
+        const double pc = phases_.p(k)[celli];
+        const cobasis::matrix Ac(toEigen(phases_.A(k)[celli]));
+        cellCarried(k, celli, sk);
         sk.rho = rhoc + sl.gRho.dot(de) + sl.dtRho;
         sk.p = pc + sl.gP.dot(de) + sl.dtP;
         sk.U = toEigen(Uc) + sl.gU.transpose()*de + sl.dtU;

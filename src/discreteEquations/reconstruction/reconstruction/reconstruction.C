@@ -64,6 +64,31 @@ void Foam::reconstruction::completeSide(const label k, phaseSide& s) const
 }
 
 
+void Foam::reconstruction::cellSide
+(
+    const label k,
+    const label celli,
+    const cobasis::vector& U,
+    phaseSide& s
+) const
+{
+    const hyperelasticPhase& ph = phases_.phase(k);
+    s.rho = phases_.rho(k)[celli];
+    s.p = phases_.p(k)[celli];
+    s.U = U;
+    s.A = toEigen(phases_.A(k)[celli]);
+    cellCarried(k, celli, s);
+    s.sigma = cells_.sigma(k, celli);
+    s.E =
+        cells_.E(k, celli)
+      + 0.5*(U.squaredNorm() - magSqr(phases_.U()[celli]));
+    s.a = cells_.a(k, celli);
+    s.cT = std::sqrt(ph.cT2());
+    s.solid = ph.solid();
+    s.trace = s.alpha < phases_.alphaTrace();
+}
+
+
 void Foam::reconstruction::markMinor(std::vector<phaseSide>& s) const
 {
     double rhoMix = 0;
@@ -112,28 +137,13 @@ void Foam::reconstruction::cellFaceState
     std::vector<phaseSide>& s
 ) const
 {
-    const vector& Uc = phases_.U()[celli];
-
-    cobasis::vector U(toEigen(Uc));
+    cobasis::vector U(toEigen(phases_.U()[celli]));
     U += toEigen(d & gradU_[celli]);
-    const double dKe = 0.5*(U.squaredNorm() - magSqr(Uc));
 
     for (label k = 0; k < nPhases_; ++k)
     {
-        phaseSide& sk = s[k];
-        const hyperelasticPhase& ph = phases_.phase(k);
-        sk.alpha = phases_.alpha(k)[celli];
-        sk.rho = phases_.rho(k)[celli];
-        sk.p = phases_.p(k)[celli];
-        sk.U = U;
-        sk.A = toEigen(phases_.A(k)[celli]);
-        cellCarried(k, celli, sk);
-        sk.sigma = cells_.sigma(k, celli);
-        sk.E = cells_.E(k, celli) + dKe;
-        sk.a = cells_.a(k, celli);
-        sk.cT = std::sqrt(ph.cT2());
-        sk.solid = ph.solid();
-        sk.trace = sk.alpha < phases_.alphaTrace();
+        s[k].alpha = phases_.alpha(k)[celli];
+        cellSide(k, celli, U, s[k]);
     }
     markMinor(s);
 }
