@@ -32,6 +32,15 @@ directories holds a NaN.
     mieGruneisenBeyondRhoMax
                   copper as Mie-Grueneisen (s 1.489: rhoMax = rho0/(1 -
                   1/s) = 27100) starting at rho.copper 30000
+    unknownAlphaReconstruction, thincBeta, thincWithCompression
+                  alphaReconstruction sharp; THINC beta 20; THINC with
+                  alphaCompression 2
+    unknownCobasisLimiter, unknownVelocityLimiter, unknownCobasisRotation,
+    unknownWaveSpeeds
+                  that discreteEquations entry set to "bogus" (the message
+                  names the entry, the word and the valid words)
+    unknownPressureRelaxation
+                  air with pressureRelaxation adiabatic (names the phase)
 The valid base case must run to its end time (control).
 
 Unphysical runs (must stop during the run with a FatalError whose message
@@ -228,6 +237,34 @@ BAD_INPUT = [
                     " alphaCompression 2;"),
      [r"alphaCompression 2", r"THINC"],
      "THINC with alphaCompression 2"),
+]
+
+
+def unknown_option(name, entry, valid):
+    """A V9 case: discreteEquations `entry` set to an unknown word; the
+    message names the entry, the word and the valid words."""
+    return ("unknown" + name[0].upper() + name[1:],
+            lambda c: edit(c, FS, "riemannSolver   HLLC;",
+                           "riemannSolver   HLLC; %s bogus;" % entry),
+            [r"discreteEquations: unknown %s bogus" % entry,
+             r"valid: \(%s\)" % " ".join(valid)],
+            "%s bogus" % entry)
+
+
+BAD_INPUT += [
+    unknown_option("cobasisLimiter", "cobasisLimiter", ["cellLimited", "none"]),
+    unknown_option("velocityLimiter", "velocityLimiter",
+                   ["cellLimited", "none"]),
+    unknown_option("cobasisRotation", "cobasisRotation", ["discard", "keep"]),
+    unknown_option("waveSpeeds", "waveSpeeds", ["pressureBased", "Davis"]),
+    ("unknownPressureRelaxation",
+     lambda c: edit(c, PP, "equationOfState { type stiffenedGas; gamma 1.4; "
+                    "pInf 0; }",
+                    "equationOfState { type stiffenedGas; gamma 1.4; "
+                    "pInf 0; } pressureRelaxation adiabatic;"),
+     [r"Phase air: unknown pressureRelaxation adiabatic",
+      r"valid: \(constantPressure isentropic\)"],
+     "air pressureRelaxation adiabatic"),
 ]
 
 

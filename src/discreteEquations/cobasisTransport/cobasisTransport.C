@@ -1,5 +1,6 @@
 #include "cobasisTransport.H"
 #include "foamEigen.H"
+#include "readOption.H"
 
 using Foam::foamEigen::toEigen;
 
@@ -17,17 +18,19 @@ Foam::cobasisTransport::cobasisTransport
     L_(nPhases_),
     advection_(nPhases_)
 {
-    const word rotation
-    (
-        dict.getOrDefault<word>("cobasisRotation", "discard")
-    );
-    if (rotation != "discard" && rotation != "keep")
-    {
-        FatalIOErrorInFunction(dict)
-            << "Unknown cobasisRotation " << rotation
-            << "; valid: (discard keep)" << exit(FatalIOError);
-    }
-    keepRotation_ = (rotation == "keep");
+    enum class rotation { discard, keep };
+    static const Enum<rotation> names
+    ({
+        {rotation::discard, "discard"},
+        {rotation::keep, "keep"}
+    });
+    keepRotation_ =
+        readOption
+        (
+            dict, "cobasisRotation", names, rotation::discard,
+            "discreteEquations"
+        )
+     == rotation::keep;
 
     const label nCells = phases.mesh().nCells();
     for (label k = 0; k < nPhases_; ++k)

@@ -1,4 +1,5 @@
 #include "phaseModel.H"
+#include "readOption.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -7,24 +8,25 @@ void Foam::phaseModel::readRelaxationPath(const dictionary& dict)
     const word& name = law_.name();
     const equationOfState& eos = law_.eos();
 
-    const word path
-    (
-        dict.getOrDefault<word>("pressureRelaxation", "constantPressure")
-    );
-    if (path != "constantPressure" && path != "isentropic")
-    {
-        FatalIOErrorInFunction(dict)
-            << "Phase " << name << ": unknown pressureRelaxation "
-            << path << "; valid: (constantPressure isentropic)"
-            << exit(FatalIOError);
-    }
-    if (path == "isentropic" && law_.solid())
+    enum class relaxationPath { constantPressure, isentropic };
+    static const Enum<relaxationPath> names
+    ({
+        {relaxationPath::constantPressure, "constantPressure"},
+        {relaxationPath::isentropic, "isentropic"}
+    });
+    isentropicRelaxation_ =
+        readOption
+        (
+            dict, "pressureRelaxation", names,
+            relaxationPath::constantPressure, "Phase " + name
+        )
+     == relaxationPath::isentropic;
+    if (isentropicRelaxation_ && law_.solid())
     {
         FatalIOErrorInFunction(dict)
             << "Phase " << name << ": pressureRelaxation isentropic is"
             << " for fluids only" << exit(FatalIOError);
     }
-    isentropicRelaxation_ = (path == "isentropic");
 
     if (dict.found("cavitationPressure"))
     {

@@ -3,6 +3,7 @@
 #include "foamEigen.H"
 #include "fvc.H"
 #include "addToRunTimeSelectionTable.H"
+#include "readOption.H"
 
 using Foam::foamEigen::toEigen;
 
@@ -13,6 +14,25 @@ namespace reconstructions
     defineTypeNameAndDebug(MUSCLHancock, 0);
     addToRunTimeSelectionTable(reconstruction, MUSCLHancock, dictionary);
 }
+}
+
+namespace
+{
+    // discreteEquations alphaReconstruction
+    enum class alphaProfile { linear, THINC };
+    const Foam::Enum<alphaProfile> alphaProfileNames
+    ({
+        {alphaProfile::linear, "linear"},
+        {alphaProfile::THINC, "THINC"}
+    });
+
+    // discreteEquations cobasisLimiter
+    enum class limiter { cellLimited, none };
+    const Foam::Enum<limiter> limiterNames
+    ({
+        {limiter::cellLimited, "cellLimited"},
+        {limiter::none, "none"}
+    });
 }
 
 
@@ -39,17 +59,12 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
             << " is not in [1, 4]" << exit(FatalIOError);
     }
 
-    const word alphaRec
+    const alphaProfile profile = readOption
     (
-        dict.getOrDefault<word>("alphaReconstruction", "linear")
+        dict, "alphaReconstruction", alphaProfileNames, alphaProfile::linear,
+        "discreteEquations"
     );
-    if (alphaRec != "linear" && alphaRec != "THINC")
-    {
-        FatalIOErrorInFunction(dict)
-            << "Unknown discreteEquations alphaReconstruction " << alphaRec
-            << "; valid: (linear THINC)" << exit(FatalIOError);
-    }
-    if (alphaRec == "THINC")
+    if (profile == alphaProfile::THINC)
     {
         if (alphaCompression_ != 1)
         {
@@ -74,17 +89,15 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
         thinc_.reset(new THINC(beta));
     }
 
-    const word limiter
+    if
     (
-        dict.getOrDefault<word>("cobasisLimiter", "cellLimited")
-    );
-    if (limiter != "cellLimited" && limiter != "none")
-    {
-        FatalIOErrorInFunction(dict)
-            << "Unknown cobasisLimiter " << limiter
-            << "; valid: (cellLimited none)" << exit(FatalIOError);
-    }
-    if (limiter == "cellLimited")
+        readOption
+        (
+            dict, "cobasisLimiter", limiterNames, limiter::cellLimited,
+            "discreteEquations"
+        )
+     == limiter::cellLimited
+    )
     {
         // A wall's ghost is the cell's mirror image (docs/numerics.md
         // section 7)

@@ -1,5 +1,6 @@
 #include "reconstruction.H"
 #include "foamEigen.H"
+#include "readOption.H"
 
 using Foam::foamEigen::toEigen;
 
@@ -38,17 +39,19 @@ Foam::reconstruction::reconstruction
 
 bool Foam::reconstruction::limitVelocity(const dictionary& dict)
 {
-    const word value
-    (
-        dict.getOrDefault<word>("velocityLimiter", "cellLimited")
-    );
-    if (value != "cellLimited" && value != "none")
-    {
-        FatalIOErrorInFunction(dict)
-            << "Unknown velocityLimiter " << value
-            << "; valid: (cellLimited none)" << exit(FatalIOError);
-    }
-    return value == "cellLimited";
+    enum class limiter { cellLimited, none };
+    static const Enum<limiter> names
+    ({
+        {limiter::cellLimited, "cellLimited"},
+        {limiter::none, "none"}
+    });
+    return
+        readOption
+        (
+            dict, "velocityLimiter", names, limiter::cellLimited,
+            "discreteEquations"
+        )
+     == limiter::cellLimited;
 }
 
 

@@ -1,5 +1,6 @@
 #include "HLLC.H"
 #include "addToRunTimeSelectionTable.H"
+#include "readOption.H"
 #include <algorithm>
 #include <cmath>
 
@@ -11,6 +12,13 @@ namespace riemannSolvers
     addToRunTimeSelectionTable(riemannSolver, HLLC, dictionary);
 }
 }
+
+const Foam::Enum<Foam::riemannSolvers::HLLC::waveSpeeds>
+Foam::riemannSolvers::HLLC::waveSpeedsNames
+({
+    {waveSpeeds::pressureBased, "pressureBased"},
+    {waveSpeeds::Davis, "Davis"}
+});
 
 
 namespace
@@ -48,20 +56,15 @@ inline double contactSpeed
 Foam::riemannSolvers::HLLC::HLLC(const dictionary& dict)
 :
     riemannSolver(dict),
-    waveSpeeds_(waveSpeeds::Davis)
-{
-    const word speedsName(dict.getOrDefault<word>("waveSpeeds", "Davis"));
-    if (speedsName == "pressureBased")
-    {
-        waveSpeeds_ = waveSpeeds::pressureBased;
-    }
-    else if (speedsName != "Davis")
-    {
-        FatalIOErrorInFunction(dict)
-            << "Unknown waveSpeeds " << speedsName
-            << "; valid: (pressureBased Davis)" << exit(FatalIOError);
-    }
-}
+    waveSpeeds_
+    (
+        readOption
+        (
+            dict, "waveSpeeds", waveSpeedsNames, waveSpeeds::Davis,
+            "discreteEquations"
+        )
+    )
+{}
 
 
 Foam::riemannSolvers::HLLC::HLLC(const waveSpeeds estimate)
