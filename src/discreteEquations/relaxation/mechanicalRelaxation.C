@@ -668,7 +668,7 @@ void Foam::mechanicalRelaxation::relaxTraces
         if (!trace_[k]) continue;
         const hyperelasticPhase& ph = phases_.phase(k);
         const equationOfState& eos = ph.eos();
-        const scalar rhoRef = eos.referenceDensity();
+        const scalar rhoRef = rhoRef_[k];
         const scalar rhoTrace = 1/v0_[k];
         if (k != main && !(rhoTrace < rhoCompressed_[k]))
         {
