@@ -155,6 +155,10 @@ def main():
       % (a.commit, a.openfoam))
     w("- Mesh: %d x %d = %d cells on the unit square, 2-D (one cell thick)"
       % (a.n, a.n, a.cells))
+    w("- Allocator: %s" % (
+        "GLIBC_TUNABLES=" + os.environ["GLIBC_TUNABLES"]
+        + " (glibc malloc keeps what is freed; bench/Allrun -d: defaults)"
+        if os.environ.get("GLIBC_TUNABLES") else "glibc's defaults"))
     w("- Load average (1, 5, 15 min) before -> after the timed runs: %s;"
       " timed runs took %s s" % (a.load, a.seconds))
     w("- Each configuration ran %d times, interleaved; the table gives the"
