@@ -23,6 +23,7 @@ Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
     failed_(nPhases_, false),
     held_(nPhases_, false),
     pHeld_(nPhases_, 0),
+    pinned_(nPhases_, false),
     nVacuum_(0),
     nUnpaid_(0),
     unpaidEnergy_(0),
@@ -86,6 +87,16 @@ Foam::scalar Foam::mechanicalRelaxation::relaxedVolume
           ? eos.dvIsentropicdp(pStar, s0.first(), s0.second())
           : 0;
         return eos.vIsentropic(max(pStar, pc), s0.first(), s0.second());
+    }
+    if (pinned_[k])
+    {
+        // Failing material in tension keeps its own state, down to its
+        // floor: it does not relax toward the fluids of the cell
+        dvdp = 0;
+        return
+            eos.p(1/v0_[k], eh0_[k]) > pHeld_[k]
+          ? v0_[k]
+          : eos.vRelaxed(pHeld_[k], 1/v0_[k], eh0_[k]);
     }
     if (held_[k] && pStar < pHeld_[k])
     {

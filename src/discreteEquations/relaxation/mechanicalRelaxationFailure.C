@@ -31,6 +31,7 @@ void Foam::mechanicalRelaxation::relaxFailed
         const label iD = phase.damageIndex();
         failed_[k] = false;
         held_[k] = false;
+        pinned_[k] = false;
         if (iD < 0 || trace_[k])
         {
             // A trace's state is the cell's business (relaxTraces)
@@ -60,10 +61,15 @@ void Foam::mechanicalRelaxation::relaxFailed
             removeShear(c, q, k);
         }
 
+        // Failing (over spallTime) and in tension, it holds its own state
+        // down to -sigmaSpall: fluids that the opening let into the cell
+        // take no tension from it before it has failed
+        pinned_[k] = !failureModel::failed(D) && pk < 0;
+
         // In tension below its floor (the whole solid, or a trace of it
         // next to a fluid) it opens up: the fluids of the cell take the
         // volume
-        open = open || pk < floor;
+        open = open || pk < floor || pinned_[k];
     }
     if (!open)
     {
@@ -103,6 +109,7 @@ void Foam::mechanicalRelaxation::relaxFailed
         for (label k = 0; k < nPhases_; ++k)
         {
             held_[k] = false;
+            pinned_[k] = false;
         }
     }
 }

@@ -139,8 +139,8 @@ Foam::scalar Foam::failureModel::spall
     {
         return p < -sigmaSpall_ ? 1 : D;
     }
-    // Growing while the tension exceeds what the material still holds
-    if (p < (1 - D)*(-sigmaSpall_) + D*pCavitation_)
+    // Growing while the tension exceeds the spall strength it holds
+    if (p < -sigmaSpall_)
     {
         return min(D + dt/spallTime_, scalar(1));
     }
