@@ -116,6 +116,7 @@ def main():
     p.add_argument("--commit", required=True)
     p.add_argument("--openfoam", required=True)
     p.add_argument("--load", required=True)
+    p.add_argument("--default-malloc", action="store_true")
     p.add_argument("--seconds", required=True)
     p.add_argument("--profile-dir", required=True)
     p.add_argument("--output", required=True)
@@ -156,9 +157,11 @@ def main():
     w("- Mesh: %d x %d = %d cells on the unit square, 2-D (one cell thick)"
       % (a.n, a.n, a.cells))
     w("- Allocator: %s" % (
-        "GLIBC_TUNABLES=" + os.environ["GLIBC_TUNABLES"]
-        + " (glibc malloc keeps what is freed; bench/Allrun -d: defaults)"
-        if os.environ.get("GLIBC_TUNABLES") else "glibc's defaults"))
+        "glibc's defaults for every run" if a.default_malloc else
+        "rhoCentralFoam with glibc's malloc keeping what is freed"
+        " (GLIBC_TUNABLES mmap_threshold 256 MB, trim_threshold 1 GB: its"
+        " faster figure on this machine type), impactFoam with glibc's"
+        " defaults (its faster one); bench/Allrun -d: defaults for both"))
     w("- Load average (1, 5, 15 min) before -> after the timed runs: %s;"
       " timed runs took %s s" % (a.load, a.seconds))
     w("- Each configuration ran %d times, interleaved; the table gives the"
