@@ -25,14 +25,6 @@ namespace
         {alphaProfile::linear, "linear"},
         {alphaProfile::THINC, "THINC"}
     });
-
-    // discreteEquations cobasisLimiter
-    enum class limiter { cellLimited, none };
-    const Foam::Enum<limiter> limiterNames
-    ({
-        {limiter::cellLimited, "cellLimited"},
-        {limiter::none, "none"}
-    });
 }
 
 

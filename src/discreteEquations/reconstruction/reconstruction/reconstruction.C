@@ -11,6 +11,16 @@ namespace Foam
 }
 
 
+// * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::reconstruction::limiter>
+Foam::reconstruction::limiterNames
+({
+    {limiter::cellLimited, "cellLimited"},
+    {limiter::none, "none"}
+});
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::reconstruction::reconstruction
@@ -39,16 +49,10 @@ Foam::reconstruction::reconstruction
 
 bool Foam::reconstruction::limitVelocity(const dictionary& dict)
 {
-    enum class limiter { cellLimited, none };
-    static const Enum<limiter> names
-    ({
-        {limiter::cellLimited, "cellLimited"},
-        {limiter::none, "none"}
-    });
     return
         readOption
         (
-            dict, "velocityLimiter", names, limiter::cellLimited,
+            dict, "velocityLimiter", limiterNames, limiter::cellLimited,
             "discreteEquations"
         )
      == limiter::cellLimited;
