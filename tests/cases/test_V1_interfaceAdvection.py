@@ -63,7 +63,8 @@ Checks per run (VALIDATION V1):
     the tetrahedra along the diagonal) keep every check above; the 1-D slab
     is at most 0.6 times as smeared as with the linear slopes, the
     hexahedra no more, the simplices at most 1.2 times (THINC does not
-    sharpen there, docs/numerics.md 5.11).
+    sharpen there, docs/numerics.md 5.11); the '_thincFull' variants
+    (THINCCoeffs range full: the step from 0 to 1) the same.
 """
 import os
 import re
@@ -104,6 +105,10 @@ RUNS = [
     ("skewed_diag_thinc", "skewed", (DIAG, DIAG, 0.0)),
     ("triangles_diag_thinc", "triangles", (DIAG, DIAG, 0.0)),
     ("tets_diag_thinc", "tets", (60.0, 48.0, 64.0)),
+    ("1D_thincFull", "1D", (100.0, 0.0, 0.0)),
+    ("skewed_diag_thincFull", "skewed", (DIAG, DIAG, 0.0)),
+    ("triangles_diag_thincFull", "triangles", (DIAG, DIAG, 0.0)),
+    ("tets_diag_thincFull", "tets", (60.0, 48.0, 64.0)),
     ("1D_MieGruneisen", "1D", (100.0, 0.0, 0.0)),
     ("triangles_diag_MieGruneisen", "triangles", (DIAG, DIAG, 0.0)),
     ("1D_fallback", "1D", (100.0, 0.0, 0.0)),
@@ -188,6 +193,9 @@ def run_case(name, kind, u0, order, riemann_solver=None):
     if "_thinc" in name:
         fc.set_entry(case, "system/fvSchemes",
                      "discreteEquations/alphaReconstruction", "THINC")
+    if "_thincFull" in name:
+        fc.set_entry(case, "system/fvSchemes",
+                     "discreteEquations/THINCCoeffs", "{ range full; }")
     if "_MieGruneisen" in name:
         path = os.path.join(case, "constant", "phaseProperties")
         with open(path) as f:
@@ -236,7 +244,8 @@ def main():
                           and "_fallback" not in r[0]
                           and "_thinc" not in r[0])]
     for name, kind, u0, order in runs:
-        base = name.replace("_compressed", "").replace("_thinc", "")
+        base = (name.replace("_compressed", "").replace("_thincFull", "")
+                .replace("_thinc", ""))
         name = "%s_o%d" % (name, order)
         u0 = np.array(u0)
         try:

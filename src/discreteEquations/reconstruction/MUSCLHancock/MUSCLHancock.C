@@ -25,6 +25,14 @@ namespace
         {alphaProfile::linear, "linear"},
         {alphaProfile::THINC, "THINC"}
     });
+
+    // discreteEquations THINCCoeffs range
+    enum class profileRange { neighbours, full };
+    const Foam::Enum<profileRange> profileRangeNames
+    ({
+        {profileRange::neighbours, "neighbours"},
+        {profileRange::full, "full"}
+    });
 }
 
 
@@ -40,7 +48,9 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
     reconstruction(phases, cells, dict),
     alphaCompression_(dict.getOrDefault<scalar>("alphaCompression", 1)),
     thinc_(),
+    thincFullRange_(false),
     cobasisLimiter_(),
+    relaxPredictor_(dict.getOrDefault<Switch>("predictorRelaxation", false)),
     slopes_(nPhases_),
     alphaScratch_(nPhases_)
 {
@@ -66,12 +76,15 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
                 << " alphaReconstruction THINC leave it out (or 1)"
                 << exit(FatalIOError);
         }
-        const scalar beta =
-            dict.optionalSubDict("THINCCoeffs").getOrDefault<scalar>
+        const dictionary& coeffs = dict.optionalSubDict("THINCCoeffs");
+        const scalar beta = coeffs.getOrDefault<scalar>("beta", 2.5);
+        thincFullRange_ =
+            readOption
             (
-                "beta",
-                2.5
-            );
+                coeffs, "range", profileRangeNames, profileRange::neighbours,
+                "discreteEquations THINCCoeffs"
+            )
+         == profileRange::full;
         if (!(beta >= 0.5 && beta <= 10))
         {
             FatalIOErrorInFunction(dict)
@@ -336,15 +349,26 @@ void Foam::reconstructions::MUSCLHancock::setProfile
     sl.nAlpha = toEigen(n);
     sl.xLow = lo;
     sl.h = hi - lo;
-    sl.xiJ = thinc_->jump(aBar);
     sl.xiShift = (U & n)*halfDt/sl.h;
-    sl.aLow = aMin;
-    sl.aRange = aRange;
+    if (thincFullRange_)
+    {
+        // The whole step from 0 to 1 (Xiao et al.'s profile): the cell
+        // mean alone places the jump
+        sl.xiJ = thinc_->jump(min(max(alpha, 1e-4), 1 - 1e-4));
+        sl.aLow = 0;
+        sl.aRange = 1;
+    }
+    else
+    {
+        sl.xiJ = thinc_->jump(aBar);
+        sl.aLow = aMin;
+        sl.aRange = aRange;
+    }
 
     // The time-centred cell value: the mean of the profile moved by half
     // a step
     sl.dtAlpha =
-        aMin + aRange*thinc_->mean(-sl.xiShift, 1 - sl.xiShift, sl.xiJ)
+        sl.aLow + sl.aRange*thinc_->mean(-sl.xiShift, 1 - sl.xiShift, sl.xiJ)
       - alpha;
 }
 
@@ -368,6 +392,57 @@ Foam::scalar Foam::reconstructions::MUSCLHancock::profileFaceAlpha
     return
         sl.aLow
       + sl.aRange*thinc_->mean(xiC - halfW, xiC + halfW, sl.xiJ);
+}
+
+
+void Foam::reconstructions::MUSCLHancock::relaxPredicted
+(
+    const label k,
+    const label c,
+    const cobasis::matrix& Ac,
+    const scalar rho,
+    const scalar p,
+    const scalar halfDt,
+    cobasis::matrix& dtA
+) const
+{
+    const phaseModel& phase = phases_[k];
+    const hyperelasticPhase& ph = phase.law();
+    const cobasis::matrix A(Ac + dtA);
+    const double detA = A.determinant();
+    if (!(detA > 0))
+    {
+        // Inadmissible: the face states fall back to the cell's
+        return;
+    }
+
+    const label iD = phase.damageIndex();
+    if (iD >= 0 && failureModel::failed(phase.carried(iD)[c]))
+    {
+        // A failed phase carries no shear (mechanicalRelaxation::
+        // removeShear)
+        dtA = cobasis::rotation(A)*std::cbrt(detA) - Ac;
+        return;
+    }
+
+    const plasticModel& plastic = phase.plastic();
+    if (!plastic.plastic())
+    {
+        return;
+    }
+    const label iEps = phase.epsilonPIndex();
+    scalar epsP = iEps >= 0 ? phase.carried(iEps)[c] : 0;
+    const scalar T =
+        plastic.needsTemperature() ? ph.eos().T(rho, ph.eos().e(rho, p)) : 0;
+    cobasis::matrix U(A);
+    plastic.correct(U, epsP, ph.elastic(), halfDt, T);
+    if (U == A)
+    {
+        // Within the yield surface (the return leaves A bit for bit)
+        return;
+    }
+    // The return gives the stretch; the prediction keeps its rotation
+    dtA = cobasis::rotation(A)*U - Ac;
 }
 
 
@@ -405,13 +480,19 @@ void Foam::reconstructions::MUSCLHancock::describe(Ostream& os) const
         << (gradUCalc_.limited() ? "cellLimited" : "none")
         << ", cobasis limiter "
         << (cobasisLimiter_.valid() ? "cellLimited" : "none");
+    if (relaxPredictor_)
+    {
+        os  << ", plastic return in the predictor";
+    }
     if (alphaCompression_ > 1)
     {
         os  << ", volume fraction slopes steepened by " << alphaCompression_;
     }
     if (thinc_.valid())
     {
-        os  << ", THINC volume fractions (beta " << thinc_->beta() << ")";
+        os  << ", THINC volume fractions (beta " << thinc_->beta()
+            << (thincFullRange_ ? ", range full" : ", range neighbours")
+            << ")";
     }
 }
 
@@ -599,6 +680,10 @@ void Foam::reconstructions::MUSCLHancock::update
                         u(0)*sl.gA[0] + u(1)*sl.gA[1] + u(2)*sl.gA[2]
                       + Ac*L
                     );
+                if (relaxPredictor_)
+                {
+                    relaxPredicted(k, c, Ac, rho[c], p[c], halfDt, sl.dtA);
+                }
             }
             else
             {
