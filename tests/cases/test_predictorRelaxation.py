@@ -9,15 +9,18 @@ excess stress: an error of first order in the time step, which at maxCo
 +1.0 % extrapolated to dt -> 0).
 
 Runs: the taylorBar tutorial (the W1 bar, stiffened-gas copper, THINC) on
-the coarse H mm mesh to 80 us, at maxCo 0.2 and 0.8, with the default
-(predictorRelaxation on) and with predictorRelaxation off.
+its coarse 0.4 mm mesh (the bar's ends on cell faces) to 40 us, by when
+most of the plastic flow has happened, at maxCo 0.2 and 0.8, with
+predictorRelaxation on and off.
 
 Checks
-  predictorRelaxation_timeStepError  the change of the final mushroom
-                     radius between maxCo 0.2 and 0.8 with the relaxed
-                     predictor is at most 1/3 of the change without it,
-                     and the same for the length change beyond 2 % of a
-                     cell (both measured over 80 us)
+  predictorRelaxation_timeStepError  from maxCo 0.2 to 0.8, the bar's
+                     length changes by at most 1/4 of the change without
+                     the return (or 2 % of a cell), and its mushroom
+                     radius by at most 1/2 of it (the radius, read at the
+                     rim, also moves with THINC's profile over the step;
+                     at 80 us on this mesh: length 0.022 against 0.533 mm,
+                     radius 0.196 against 0.711 mm)
   predictorRelaxation_sameOnElastic  a run whose copper never yields
                      (sigmaY raised to 1e12 Pa, 10 us) is the same with
                      and without: the return leaves a state within the
@@ -36,8 +39,8 @@ import numpy as np  # noqa: E402
 import foamcase  # noqa: E402
 from checks import Checks  # noqa: E402
 
-H = 0.8  # mm
-END = 80e-6
+H = 0.4  # mm
+END = 40e-6
 
 
 def run(tag, maxCo, relax, end=END, sigmaY=None):
@@ -86,10 +89,10 @@ def main():
              for relax in (True, False) for co in (0.2, 0.8)]
     checks.check(
         "predictorRelaxation_timeStepError",
-        dR_on <= dR_off/3 and dL_on <= max(dL_off/3, 0.02*h),
-        "radius change maxCo 0.2 -> 0.8: %.3f mm relaxed, %.3f mm not "
-        "(bound 1/3); length change %.3f mm, %.3f mm; %s"
-        % (dR_on*1e3, dR_off*1e3, dL_on*1e3, dL_off*1e3, "; ".join(lines)))
+        dL_on <= max(dL_off/4, 0.02*h) and dR_on <= dR_off/2,
+        "length change maxCo 0.2 -> 0.8: %.3f mm relaxed, %.3f mm not "
+        "(bound 1/4); radius change %.3f mm, %.3f mm (bound 1/2); %s"
+        % (dL_on*1e3, dL_off*1e3, dR_on*1e3, dR_off*1e3, "; ".join(lines)))
 
     # No yielding: the same run, bit for bit up to round-off
     on = run("elastic_on", 0.4, True, end=1e-5, sigmaY=1e12)
