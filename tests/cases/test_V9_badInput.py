@@ -39,6 +39,8 @@ directories holds a NaN.
     unknownWaveSpeeds
                   that discreteEquations entry set to "bogus" (the message
                   names the entry, the word and the valid words)
+    unknownThincRange
+                  THINCCoeffs { range bogus; } with THINC
     unknownPressureRelaxation
                   air with pressureRelaxation adiabatic (names the phase)
 The valid base case must run to its end time (control).
@@ -257,6 +259,13 @@ BAD_INPUT += [
                    ["cellLimited", "none"]),
     unknown_option("cobasisRotation", "cobasisRotation", ["discard", "keep"]),
     unknown_option("waveSpeeds", "waveSpeeds", ["pressureBased", "Davis"]),
+    ("unknownThincRange",
+     lambda c: edit(c, FS, "riemannSolver   HLLC;",
+                    "riemannSolver   HLLC; alphaReconstruction THINC;"
+                    " THINCCoeffs { range bogus; }"),
+     [r"discreteEquations THINCCoeffs: unknown range bogus",
+      r"valid: \(neighbours full\)"],
+     "THINCCoeffs range bogus"),
     ("unknownPressureRelaxation",
      lambda c: edit(c, PP, "equationOfState { type stiffenedGas; gamma 1.4; "
                     "pInf 0; }",
