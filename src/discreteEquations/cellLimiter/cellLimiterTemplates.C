@@ -49,7 +49,8 @@ void Foam::cellLimiter::factors
 (
     const GeometricField<Type, fvPatchField, volMesh>& vf,
     const Extrapolate& extrapolate,
-    Field<Type>& limiter
+    Field<Type>& limiter,
+    const boolList* active
 ) const
 {
     const labelUList& own = mesh_.owner();
@@ -91,6 +92,10 @@ void Foam::cellLimiter::factors
     limiter = pTraits<Type>::one;
     const auto limitFace = [&](const label celli, const vector& dx)
     {
+        if (active && !(*active)[celli])
+        {
+            return;
+        }
         const Type dv(extrapolate(celli, dx));
         for (direction cmpt = 0; cmpt < pTraits<Type>::nComponents; ++cmpt)
         {

@@ -52,7 +52,8 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
     cobasisLimiter_(),
     relaxPredictor_(dict.getOrDefault<Switch>("predictorRelaxation", false)),
     slopes_(nPhases_),
-    alphaScratch_(nPhases_)
+    alphaScratch_(nPhases_),
+    slopeCells_(mesh_.nCells(), false)
 {
     if (!(alphaCompression_ >= 1 && alphaCompression_ <= 4))
     {
@@ -558,6 +559,14 @@ void Foam::reconstructions::MUSCLHancock::update
         }
         if (ph.solid() && cobasisLimiter_.valid())
         {
+            // Only the cells that take slopes (not minor, not first
+            // order) are limited: the others zero them below
+            for (label c = 0; c < nCells; ++c)
+            {
+                slopeCells_[c] =
+                    !(minAlpha[c] < phases_.alphaMinor())
+                 && !firstOrderCell(c);
+            }
             cobasisLimiter_->factors
             (
                 A,
@@ -573,13 +582,15 @@ void Foam::reconstructions::MUSCLHancock::update
                     }
                     return dA;
                 },
-                limiterA
+                limiterA,
+                &slopeCells_
             );
             for (int i = 0; i < 3; ++i)
             {
                 tensorField& g = dAdx_[i];
                 forAll(g, celli)
                 {
+                    if (!slopeCells_[celli]) continue;
                     for (direction cmpt = 0; cmpt < 9; ++cmpt)
                     {
                         g[celli][cmpt] *= limiterA[celli][cmpt];
