@@ -53,7 +53,8 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
     relaxPredictor_(dict.getOrDefault<Switch>("predictorRelaxation", false)),
     slopes_(nPhases_),
     alphaScratch_(nPhases_),
-    slopeCells_(mesh_.nCells(), false)
+    slopeCells_(mesh_.nCells(), false),
+    gauss_(mesh_)
 {
     if (!(alphaCompression_ >= 1 && alphaCompression_ <= 4))
     {
@@ -498,6 +499,24 @@ void Foam::reconstructions::MUSCLHancock::describe(Ostream& os) const
 }
 
 
+void Foam::reconstructions::MUSCLHancock::slopes
+(
+    const volScalarField& vf,
+    vectorField& g,
+    const boolList* active
+)
+{
+    if (cellLimitedGauss::matches(mesh_, vf.name()))
+    {
+        gauss_.grad(vf, g, active);
+    }
+    else
+    {
+        g = fvc::grad(vf)().primitiveField();
+    }
+}
+
+
 void Foam::reconstructions::MUSCLHancock::update
 (
     const scalar dt,
@@ -526,30 +545,37 @@ void Foam::reconstructions::MUSCLHancock::update
         // Minor-phase rule: below alphaMinor in the cell or any neighbour
         alphaRange(alpha, minAlpha, maxAlpha);
 
-        // A single phase has alpha = 1 everywhere: no slope to compute
-        const tmp<volVectorField> tgAlpha
-        (
-            nPhases_ > 1
-          ? fvc::grad(alpha)
-          : tmp<volVectorField>
-            (
-                new volVectorField
-                (
-                    IOobject("gradAlpha", mesh_.time().timeName(), mesh_),
-                    mesh_,
-                    dimensionedVector(dimless/dimLength, Zero)
-                )
-            )
-        );
-        const tmp<volVectorField> tgRho(fvc::grad(phases_.rho(k)));
-        const tmp<volVectorField> tgP(fvc::grad(phases_.p(k)));
-        vectorField gAlpha(tgAlpha().primitiveField());
+        // The cells that take slopes of rho, p and A: not minor, not first
+        // order (the loop below zeroes the others)
+        for (label c = 0; c < nCells; ++c)
+        {
+            slopeCells_[c] =
+                !(minAlpha[c] < phases_.alphaMinor()) && !firstOrderCell(c);
+        }
+
+        // Slopes of alpha, rho and p: fvSchemes' gradSchemes; the
+        // tutorials' "cellLimited Gauss linear 1" by cellLimitedGauss, the
+        // same values without temporary fields, limited only where used
+        // (alpha: everywhere, THINC and the face alphas of minor cells
+        // read it). A single phase has alpha = 1: no slope
+        if (nPhases_ > 1)
+        {
+            slopes(alpha, gAlpha_, nullptr);
+        }
+        else
+        {
+            gAlpha_.setSize(nCells);
+            gAlpha_ = Zero;
+        }
+        slopes(phases_.rho(k), gRho_, &slopeCells_);
+        slopes(phases_.p(k), gP_, &slopeCells_);
+        vectorField& gAlpha = gAlpha_;
         if (alphaCompression_ > 1 && nPhases_ > 1)
         {
             compressAlphaSlopes(alpha, minAlpha, maxAlpha, gAlpha);
         }
-        const vectorField& gRho = tgRho().primitiveField();
-        const vectorField& gP = tgP().primitiveField();
+        const vectorField& gRho = gRho_;
+        const vectorField& gP = gP_;
 
         // Cobasis slopes: Gauss linear (the face values of A's boundary
         // conditions), limited with mirror neighbours
@@ -559,14 +585,6 @@ void Foam::reconstructions::MUSCLHancock::update
         }
         if (ph.solid() && cobasisLimiter_.valid())
         {
-            // Only the cells that take slopes (not minor, not first
-            // order) are limited: the others zero them below
-            for (label c = 0; c < nCells; ++c)
-            {
-                slopeCells_[c] =
-                    !(minAlpha[c] < phases_.alphaMinor())
-                 && !firstOrderCell(c);
-            }
             cobasisLimiter_->factors
             (
                 A,
