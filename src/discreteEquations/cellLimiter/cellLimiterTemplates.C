@@ -66,6 +66,10 @@ void Foam::cellLimiter::factors
     {
         const label o = own[facei];
         const label n = nei[facei];
+        if (active && !(*active)[o] && !(*active)[n])
+        {
+            continue;
+        }
         vMax[o] = max(vMax[o], v[n]);
         vMin[o] = min(vMin[o], v[n]);
         vMax[n] = max(vMax[n], v[o]);
@@ -82,6 +86,10 @@ void Foam::cellLimiter::factors
         }
         forAll(fc, i)
         {
+            if (active && !(*active)[fc[i]])
+            {
+                continue;
+            }
             const Type vn(value(patchi, i, vf, nbr));
             vMax[fc[i]] = max(vMax[fc[i]], vn);
             vMin[fc[i]] = min(vMin[fc[i]], vn);

@@ -234,14 +234,21 @@ void Foam::reconstructions::MUSCLHancock::cobasisSlopes
     // Adds S_i A_f to cell c's sum of direction i
     const auto add = [this](const label c, const vector& S, const tensor& Af)
     {
+        if (!slopeCells_[c]) return;
         for (int i = 0; i < 3; ++i)
         {
             dAdx_[i][c] += S[i]*Af;
         }
     };
 
+    // Only the cells that take slopes need theirs: a face between two
+    // others is skipped (each cell's sum keeps its order)
     forAll(nei, facei)
     {
+        if (!slopeCells_[own[facei]] && !slopeCells_[nei[facei]])
+        {
+            continue;
+        }
         const tensor Af
         (
             w[facei]*(Ai[own[facei]] - Ai[nei[facei]]) + Ai[nei[facei]]
