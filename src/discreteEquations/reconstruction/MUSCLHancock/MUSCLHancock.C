@@ -50,7 +50,7 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
     thinc_(),
     thincFullRange_(false),
     cobasisLimiter_(),
-    relaxPredictor_(dict.getOrDefault<Switch>("predictorRelaxation", false)),
+    relaxPredictor_(dict.getOrDefault<Switch>("predictorRelaxation", true)),
     slopes_(nPhases_),
     alphaScratch_(nPhases_),
     slopeCells_(mesh_.nCells(), false),
