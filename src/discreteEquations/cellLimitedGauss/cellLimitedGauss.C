@@ -85,9 +85,6 @@ void Foam::cellLimitedGauss::grad
             forAll(patch, i)
             {
                 g[fc[i]] += pSf[i]*(pw[i]*vi[i] + (1.0 - pw[i])*vn[i]);
-            }
-            forAll(patch, i)
-            {
                 vMax_[fc[i]] = max(vMax_[fc[i]], vn[i]);
                 vMin_[fc[i]] = min(vMin_[fc[i]], vn[i]);
             }
@@ -97,9 +94,6 @@ void Foam::cellLimitedGauss::grad
             forAll(patch, i)
             {
                 g[fc[i]] += pSf[i]*pv[i];
-            }
-            forAll(patch, i)
-            {
                 vMax_[fc[i]] = max(vMax_[fc[i]], pv[i]);
                 vMin_[fc[i]] = min(vMin_[fc[i]], pv[i]);
             }
