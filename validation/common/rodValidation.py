@@ -31,6 +31,12 @@ L_TOL = 0.01          # within 1 % of the band on the 0.2 mm mesh
 R_TOL = 0.01
 FINE_TOL = 0.005      # within 0.5 % on the finest mesh
 W2_TOL = 0.01         # rod-on-rod within 1 % of the Taylor bar
+# The history of the finite-element run behind the band (Sierra/SM
+# composite tetrahedra, h = 0.19 mm; source in the file's header): compared
+# with the runs' L(t), R(t) as a diagnostic, not a decision
+REF_HISTORY = os.path.join(ROOT, "validation", "taylorBar", "reference",
+                           "sierra-ct-h0.19-history.csv")
+REF_LABEL = "FE (Sierra/SM, h = 0.19 mm)"
 W4_TOL = 0.20         # Taylor's apparent yield within 20 % of sigma_Y
 
 
@@ -210,8 +216,52 @@ def read_measured(path):
     return data
 
 
-def plot_histories(runs, png, title, measured=None, per_rod=1.0):
-    """L(t) and R(t) of several runs [(label, table)] against the band."""
+def read_reference_history(path=REF_HISTORY):
+    """The reference history: dict of lists t, radius, length (SI), from
+    a CSV whose comment lines start with '#'."""
+    with open(path) as f:
+        rows = list(csv.DictReader(ln for ln in f if not ln.startswith("#")))
+    return {k: [float(r[k]) for r in rows] for k in ("t", "radius", "length")}
+
+
+def interpolate(ts, ys, t):
+    """ys(t) by linear interpolation in the increasing ts (None outside)."""
+    if not ts or t < ts[0] or t > ts[-1]:
+        return None
+    lo, hi = 0, len(ts) - 1
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        if ts[mid] <= t:
+            lo = mid
+        else:
+            hi = mid
+    if ts[hi] == ts[lo]:
+        return ys[lo]
+    w = (t - ts[lo]) / (ts[hi] - ts[lo])
+    return ys[lo] + w * (ys[hi] - ys[lo])
+
+
+def history_comparison(tab, ref, times_us=(5, 10, 20, 30, 40, 50, 60, 70,
+                                           80)):
+    """Rows (t [us], L, L_ref, R, R_ref) [m] at the given times, the run's
+    table and the reference each interpolated linearly; times outside
+    either record are left out."""
+    rows = []
+    for tu in times_us:
+        t = tu * 1e-6
+        L = interpolate(tab["t"], tab["length"], t)
+        R = interpolate(tab["t"], tab["maxRadius"], t)
+        Lr = interpolate(ref["t"], ref["length"], t)
+        Rr = interpolate(ref["t"], ref["radius"], t)
+        if None not in (L, R, Lr, Rr):
+            rows.append((tu, L, Lr, R, Rr))
+    return rows
+
+
+def plot_histories(runs, png, title, measured=None, per_rod=1.0,
+                   reference=None):
+    """L(t) and R(t) of several runs [(label, table)] against the band (and
+    a reference history dict t, radius, length when given)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -227,6 +277,12 @@ def plot_histories(runs, png, title, measured=None, per_rod=1.0):
         a.set_xlabel("t [us]")
         a.set_ylabel("%s [mm]" % name)
         a.grid(True, alpha=0.3)
+    if reference:
+        t = [x * 1e6 for x in reference["t"]]
+        ax[0].plot(t, [x * 1e3 for x in reference["length"]], "k--",
+                   lw=1, label=REF_LABEL)
+        ax[1].plot(t, [x * 1e3 for x in reference["radius"]], "k--",
+                   lw=1, label=REF_LABEL)
     if measured:
         ax[0].plot([m[0] * 1e6 for m in measured],
                    [m[1] * 1e3 / per_rod for m in measured], "ko",
