@@ -65,7 +65,7 @@ void Foam::boundaryFaceStates::update
             const vector d(Cf[meshFacei] - C[fc[facei]]);
             if (fallbackFaces && (*fallbackFaces)[meshFacei])
             {
-                rec.cellFaceState(fc[facei], d, own[facei]);
+                rec.cellMeanState(fc[facei], own[facei]);
             }
             else
             {

@@ -88,8 +88,8 @@ void Foam::demSolver::internalFaces()
         const bool fallback = anyFallback && fallbackFaces_[facei];
         if (fallback)
         {
-            rec.cellFaceState(o, Cf[facei] - C[o], faceO_);
-            rec.cellFaceState(nb, Cf[facei] - C[nb], faceN_);
+            rec.cellMeanState(o, faceO_);
+            rec.cellMeanState(nb, faceN_);
         }
         else
         {
@@ -174,7 +174,7 @@ void Foam::demSolver::boundaryFaces()
                 );
                 if (fallback)
                 {
-                    rec.cellFaceState(celli, d, cellFace);
+                    rec.cellMeanState(celli, cellFace);
                 }
                 else
                 {

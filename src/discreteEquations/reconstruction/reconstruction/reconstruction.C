@@ -156,4 +156,21 @@ void Foam::reconstruction::cellFaceState
 }
 
 
+void Foam::reconstruction::cellMeanState
+(
+    const label celli,
+    std::vector<phaseSide>& s
+) const
+{
+    const cobasis::vector U(toEigen(phases_.U()[celli]));
+
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        s[k].alpha = phases_.alpha(k)[celli];
+        cellSide(k, celli, U, s[k]);
+    }
+    markMinor(s);
+}
+
+
 // ************************************************************************* //
