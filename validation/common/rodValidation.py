@@ -104,9 +104,11 @@ def finished_run(case, h_mm, end=None):
     return wall
 
 
-def prepare_run(tutorial, case, h_mm, np_, reuse, label, end=None):
-    """Run tutorial at cell size h_mm in case (a fresh copy) and return the
-    wall time; with reuse, a finished run already there is taken as is."""
+def prepare_run(tutorial, case, h_mm, np_, reuse, label, end=None,
+                modify=None):
+    """Run tutorial at cell size h_mm in case (a fresh copy, given to
+    modify(case) first when given) and return the wall time; with reuse, a
+    finished run already there is taken as is."""
     if reuse:
         wall = finished_run(case, h_mm, end)
         if wall is not None:
@@ -114,6 +116,8 @@ def prepare_run(tutorial, case, h_mm, np_, reuse, label, end=None):
                      % (label, h_mm, case))
             return wall
     copy_case(tutorial, case)
+    if modify:
+        modify(case)
     progress("%s h = %g mm: running in %s" % (label, h_mm, case))
     return run_case(case, h_mm, np_, end=end, label=label)
 
@@ -228,17 +232,8 @@ def interpolate(ts, ys, t):
     """ys(t) by linear interpolation in the increasing ts (None outside)."""
     if not ts or t < ts[0] or t > ts[-1]:
         return None
-    lo, hi = 0, len(ts) - 1
-    while hi - lo > 1:
-        mid = (lo + hi) // 2
-        if ts[mid] <= t:
-            lo = mid
-        else:
-            hi = mid
-    if ts[hi] == ts[lo]:
-        return ys[lo]
-    w = (t - ts[lo]) / (ts[hi] - ts[lo])
-    return ys[lo] + w * (ys[hi] - ys[lo])
+    import numpy as np
+    return float(np.interp(t, ts, ys))
 
 
 def history_comparison(tab, ref, times_us=(5, 10, 20, 30, 40, 50, 60, 70,

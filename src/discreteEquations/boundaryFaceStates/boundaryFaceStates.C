@@ -62,13 +62,13 @@ void Foam::boundaryFaceStates::update
         {
             // First order on a fall-back face (demSolver)
             const label meshFacei = patch.start() + facei;
-            const vector d(Cf[meshFacei] - C[fc[facei]]);
             if (fallbackFaces && (*fallbackFaces)[meshFacei])
             {
                 rec.cellMeanState(fc[facei], own[facei]);
             }
             else
             {
+                const vector d(Cf[meshFacei] - C[fc[facei]]);
                 rec.faceState(fc[facei], meshFacei, d, own[facei]);
             }
             for (label k = 0; k < nPhases_; ++k)

@@ -164,7 +164,11 @@ void Foam::demSolver::boundaryFaces()
             const cobasis::vector n(S/magSf_[facei]);
             const bool fallback = anyFallback && fallbackFaces_[facei];
 
-            if (!coupled)
+            if (!coupled && fallback)
+            {
+                rec.cellMeanState(celli, cellFace);
+            }
+            else if (!coupled)
             {
                 const vector d
                 (
@@ -172,14 +176,7 @@ void Foam::demSolver::boundaryFaces()
                   ? vector((Tinv & Cf[facei]) - C[celli])
                   : vector(Cf[facei] - C[celli])
                 );
-                if (fallback)
-                {
-                    rec.cellMeanState(celli, cellFace);
-                }
-                else
-                {
-                    rec.faceState(celli, facei, d, cellFace);
-                }
+                rec.faceState(celli, facei, d, cellFace);
             }
             // (a wedge face is never coupled: its rotation below acts on
             // cellFace)

@@ -146,13 +146,7 @@ void Foam::reconstruction::cellFaceState
 {
     cobasis::vector U(toEigen(phases_.U()[celli]));
     U += toEigen(d & gradU_[celli]);
-
-    for (label k = 0; k < nPhases_; ++k)
-    {
-        s[k].alpha = phases_.alpha(k)[celli];
-        cellSide(k, celli, U, s[k]);
-    }
-    markMinor(s);
+    cellSides(celli, U, s);
 }
 
 
@@ -162,8 +156,17 @@ void Foam::reconstruction::cellMeanState
     std::vector<phaseSide>& s
 ) const
 {
-    const cobasis::vector U(toEigen(phases_.U()[celli]));
+    cellSides(celli, toEigen(phases_.U()[celli]), s);
+}
 
+
+void Foam::reconstruction::cellSides
+(
+    const label celli,
+    const cobasis::vector& U,
+    std::vector<phaseSide>& s
+) const
+{
     for (label k = 0; k < nPhases_; ++k)
     {
         s[k].alpha = phases_.alpha(k)[celli];
