@@ -30,6 +30,7 @@ Description
 #include "phaseSystem.H"
 #include "demSolver.H"
 #include "mechanicalRelaxation.H"
+#include "voidVelocity.H"
 #include "bodyForces.H"
 #include "stepControl.H"
 #include "OStringStream.H"
@@ -81,6 +82,7 @@ int main(int argc, char *argv[])
     phaseSystem phases(mesh);
     demSolver dem(phases, mesh.schemesDict().subOrEmptyDict("discreteEquations"));
     mechanicalRelaxation relaxation(phases);
+    voidVelocity voidCells(phases);
     bodyForces forces(mesh);
     stepControl step(runTime, phases, dem);
     conservedState q;
@@ -139,15 +141,22 @@ int main(int argc, char *argv[])
             continue;
         }
 
+        // Void cells (no phase counts) keep a velocity in their neighbours'
+        // range (docs/numerics.md 9.11)
+        voidCells.correct();
+
         // What the step did beyond the scheme, summed over the processors
         // in one reduction: vacuum floors, phases set without a payer and
-        // the energy that added, cells and faces at first order
-        List<scalar> counts(5);
+        // the energy that added, cells and faces at first order, void
+        // cells whose velocity was held and the kinetic energy that added
+        List<scalar> counts(7);
         counts[0] = relaxation.nVacuum();
         counts[1] = relaxation.nUnpaid();
         counts[2] = relaxation.unpaidEnergy();
         counts[3] = dem.nFallbackCells();
         counts[4] = dem.nFallbackFaces();
+        counts[5] = voidCells.nCells();
+        counts[6] = voidCells.energy();
         Pstream::listCombineGather(counts, plusEqOp<scalar>());
         Pstream::listCombineScatter(counts);
         dem.countStep(counts[3], counts[4]);
@@ -162,6 +171,12 @@ int main(int argc, char *argv[])
             Info<< "    set without a payer (vacuum floor, trace reset) in "
                 << counts[1] << " cells: energy added " << counts[2] << " J"
                 << nl;
+        }
+        if (counts[5] > 0)
+        {
+            unpaidTotal += counts[6];
+            Info<< "    void cells: velocity held in " << counts[5]
+                << " cells: energy added " << counts[6] << " J" << nl;
         }
 
         phases.correctBoundaryConditions();
