@@ -39,8 +39,9 @@ strain to fracture of 0.01 and a cutoff of 0.1 GPa in the copper
 (failure { type JohnsonCook; D1 0.01; D2 0; D3 0; sigmaSpall 1e8; }), and
 with a 20 MPa spall cutoff over spallTime 1e-8 s (failing copper in
 tension keeps its own state in the pressure relaxation): some copper
-fails, and mass of each phase and total energy are conserved to 1e-12
-relative.
+fails (counted at a write every 5 steps: afterwards the transport mixes a
+failed cell's damage below 1), and mass of each phase and total energy are
+conserved to 1e-12 relative.
 
 The acoustic estimate of the spall strength from the pull-back (within
 15 % in VALIDATION.md) is decided by validation/spall/validate, not here.
@@ -260,6 +261,11 @@ def main():
                     + text[m.end():])
             with open(path, "w") as f:
                 f.write(text)
+            # A write every 5 steps: failed cells are counted at each (the
+            # transport mixes a failed cell's damage below 1 afterwards)
+            fc.set_entry(case, "system/controlDict", "writeControl",
+                         "timeStep")
+            fc.set_entry(case, "system/controlDict", "writeInterval", 5)
         try:
             box = v6.run_tutorial("V12_closedBox" + tag, 2, False,
                                   before_run=add_failure)
@@ -272,17 +278,22 @@ def main():
         s0 = v6.state(box, "0", phases, mesh.nCells)
         s1 = v6.state(box, tEnd, phases, mesh.nCells)
         T0, T1 = v6.totals(s0, phases, mesh.V), v6.totals(s1, phases, mesh.V)
-        D = fc.read_field(box, tEnd, "damage.copper", mesh.nCells)
-        a = fc.read_field(box, tEnd, "alpha.copper", mesh.nCells)
-        nFailed = int(np.sum((D >= 1 - 1e-6) & (a > 1e-3)))
-        nDamaged = int(np.sum((D > 0) & (a > 1e-3)))
+        nFailed, nDamaged = 0, 0
+        for _, n in fc.time_dirs(box):
+            if n == "0":
+                continue
+            D = fc.read_field(box, n, "damage.copper", mesh.nCells)
+            a = fc.read_field(box, n, "alpha.copper", mesh.nCells)
+            nFailed = max(nFailed, int(np.sum((D >= 1 - 1e-6) & (a > 1e-3))))
+            nDamaged = max(nDamaged, int(np.sum((D > 0) & (a > 1e-3))))
         worst = max(abs(T1["mass"][n] - T0["mass"][n])/T0["mass"][n]
                     for n, _ in phases)
         dE = abs(T1["energy"] - T0["energy"])/abs(T0["energy"])
         checks.check("V12_conservation" + tag,
                      nFailed > 0 and worst <= 1e-12 and dE <= 1e-12,
-                     "closed box, failure { %s }: %d cells of failed copper "
-                     "(%d damaged) at t = %s; largest relative mass change "
+                     "closed box, failure { %s }: at most %d cells of "
+                     "failed copper (%d damaged) at the writes to t = %s; "
+                     "largest relative mass change "
                      "%.3e, total energy %.3e (bound 1e-12)"
                      % (failure, nFailed, nDamaged, tEnd, worst, dE))
     checks.exit()

@@ -24,9 +24,8 @@ Foam::scalar Foam::stableTimeStep::deltaT(const cellStates& cells) const
     const vectorField& U = phases_.U().primitiveField();
 
     // Largest longitudinal speed among the phases that are not minor
-    // (above alphaMinor and massFractionMinor)
+    // (phaseSystem::minor)
     const scalarField& rhoMix = phases_.rhoMixture().primitiveField();
-    const scalar Ymin = phases_.massFractionMinor();
     scalarField aMax(nCells, 0);
     for (label k = 0; k < phases_.size(); ++k)
     {
@@ -36,8 +35,10 @@ Foam::scalar Foam::stableTimeStep::deltaT(const cellStates& cells) const
         {
             if
             (
-                alpha[celli] >= phases_.alphaMinor()
-             && alpha[celli]*rho[celli] >= Ymin*rhoMix[celli]
+                !phases_.minor
+                (
+                    alpha[celli], alpha[celli]*rho[celli], rhoMix[celli]
+                )
             )
             {
                 aMax[celli] = max(aMax[celli], cells.a(k, celli));

@@ -103,12 +103,9 @@ void Foam::reconstruction::markMinor(std::vector<phaseSide>& s) const
     {
         rhoMix += s[k].alpha*s[k].rho;
     }
-    const double Ymin = phases_.massFractionMinor();
     for (label k = 0; k < nPhases_; ++k)
     {
-        s[k].minor =
-            s[k].alpha < phases_.alphaMinor()
-         || s[k].alpha*s[k].rho < Ymin*rhoMix;
+        s[k].minor = phases_.minor(s[k].alpha, s[k].alpha*s[k].rho, rhoMix);
     }
 }
 
