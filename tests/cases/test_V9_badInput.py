@@ -517,6 +517,31 @@ def check_control():
 _NUM = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 
 
+def check_first_order_courant():
+    """discreteEquations order 1 with maxCo 0.8: the first-order scheme is
+    stable only up to 0.5 (docs/numerics.md 6.1); the solver warns and every
+    step's Courant number is at most 0.5."""
+    tag = "V9_firstOrderCourant"
+    try:
+        case = prepare("firstOrderCourant")
+        fc.set_entry(case, "system/fvSchemes", "discreteEquations/order", 1)
+        fc.set_entry(case, "system/controlDict", "maxCo", 0.8)
+    except fc.FoamError as e:
+        checks.fail(tag, e.summary)
+        return
+    code, log = run_impactfoam(case)
+    co = [float(c) for c in re.findall(r"Courant Number max = (%s)" % _NUM,
+                                       log)]
+    warned = "is above 0.5, the stability limit" in log
+    ok = code == 0 and warned and co and max(co) <= 0.5 * (1 + 1e-9)
+    checks.check(tag, ok, "order 1, maxCo 0.8: exit code %s, warning %s, "
+                 "%d steps, largest Courant number %s (bound 0.5)"
+                 % (code, "given" if warned else "missing", len(co),
+                    "%.6g" % max(co) if co else "-"))
+
+
+
+
 def check_unphysical(name, modifications, what, patterns=()):
     tag = "V9_unphysical_" + name
     try:
@@ -609,6 +634,7 @@ def main():
                     % " ".join(missing))
         checks.exit()
     check_control()
+    check_first_order_courant()
     for name, modify, patterns, what in BAD_INPUT:
         check_bad_input(name, modify, patterns, what)
     for name, modifications, what, patterns in UNPHYSICAL:

@@ -13,7 +13,15 @@ Foam::stepControl::stepControl
     runTime_(runTime),
     phases_(phases),
     dem_(dem),
-    maxCo_(runTime.controlDict().getOrDefault<scalar>("maxCo", 0.4)),
+    maxCo_
+    (
+        // Default: 0.8 of the scheme's stability limit (0.8 at second
+        // order, 0.4 at first; docs/numerics.md 6.1)
+        runTime.controlDict().getOrDefault<scalar>
+        (
+            "maxCo", 0.8*dem.maxCourant()
+        )
+    ),
     maxDeltaT_
     (
         runTime.controlDict().getOrDefault<scalar>("maxDeltaT", GREAT)
@@ -37,6 +45,18 @@ Foam::stepControl::stepControl
         FatalIOErrorInFunction(runTime.controlDict())
             << "maxCo = " << maxCo_ << " must be in (0, 1]"
             << exit(FatalIOError);
+    }
+    if (maxCo_ > dem.maxCourant())
+    {
+        // The first-order scheme (discreteEquations order 1) is stable up
+        // to 0.5 (docs/numerics.md 6.1); the tutorials' 0.8 is for the
+        // second-order scheme
+        WarningInFunction
+            << "maxCo " << maxCo_ << " in " << runTime.controlDict().name()
+            << " is above " << dem.maxCourant() << ", the stability limit"
+            << " of this scheme (discreteEquations order): the time step"
+            << " uses " << dem.maxCourant() << endl;
+        maxCo_ = dem.maxCourant();
     }
 }
 
