@@ -35,7 +35,12 @@ Checks
                          max |d sigmaEq|/sigma_Y below 1e-6. The slip wall
                          of the Taylor bar is the mirror ghost state, so the
                          symmetric problem must reproduce it (up to
-                         round-off in the face orientation).
+                         round-off in the face orientation). At the
+                         tutorials' maxCo 0.8 this also catches an unstable
+                         scheme: with the copper film behind the bar
+                         carried as a minor phase (before session 17,
+                         docs/numerics.md 2.7) a mode grew from round-off
+                         on the axis to 7e-3 of 227 m/s by 20 us.
 """
 import os
 import sys
