@@ -10,7 +10,9 @@ Foam::stableTimeStep::stableTimeStep
     mesh_(phases.mesh()),
     magSf_(magSf),
     limitingCell_(-1),
-    limitingSpeed_(0)
+    limitingSpeed_(0),
+    aMax_(mesh_.nCells()),
+    sumLambda_(mesh_.nCells())
 {}
 
 
@@ -26,7 +28,8 @@ Foam::scalar Foam::stableTimeStep::deltaT(const cellStates& cells) const
     // Largest longitudinal speed among the phases that are not minor
     // (phaseSystem::minor)
     const scalarField& rhoMix = phases_.rhoMixture().primitiveField();
-    scalarField aMax(nCells, 0);
+    scalarField& aMax = aMax_;
+    aMax = 0;
     for (label k = 0; k < phases_.size(); ++k)
     {
         const scalarField& alpha = phases_.alpha(k).primitiveField();
@@ -46,7 +49,8 @@ Foam::scalar Foam::stableTimeStep::deltaT(const cellStates& cells) const
         }
     }
 
-    scalarField sumLambda(nCells, 0);
+    scalarField& sumLambda = sumLambda_;
+    sumLambda = 0;
     forAll(nei, facei)
     {
         const scalar magS = magSf[facei];
