@@ -15,11 +15,11 @@ Foam::stepControl::stepControl
     dem_(dem),
     maxCo_
     (
-        // Default: 0.8 of the scheme's stability limit (0.8 at second
-        // order, 0.4 at first; docs/numerics.md 6.1)
+        // Default: 0.6 at second order, 0.4 at first (0.8 of its limit
+        // 0.5); docs/numerics.md 6.1
         runTime.controlDict().getOrDefault<scalar>
         (
-            "maxCo", 0.8*dem.maxCourant()
+            "maxCo", min(scalar(0.6), 0.8*dem.maxCourant())
         )
     ),
     maxDeltaT_
@@ -49,7 +49,7 @@ Foam::stepControl::stepControl
     if (maxCo_ > dem.maxCourant())
     {
         // The first-order scheme (discreteEquations order 1) is stable up
-        // to 0.5 (docs/numerics.md 6.1); the tutorials' 0.8 is for the
+        // to 0.5 (docs/numerics.md 6.1); the tutorials' 0.6 is for the
         // second-order scheme
         WarningInFunction
             << "maxCo " << maxCo_ << " in " << runTime.controlDict().name()
