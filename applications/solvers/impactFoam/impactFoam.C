@@ -20,7 +20,7 @@ Description
 
     Dictionaries: constant/phaseProperties (phases and their models),
     system/fvSchemes discreteEquations { riemannSolver HLLC; } and
-    gradSchemes (limited gradients), system/controlDict maxCo (default 0.4)
+    gradSchemes (limited gradients), system/controlDict maxCo (default 0.6 at second order, 0.4 at first)
     and maxDeltaT; optional constant/g (gravity) and constant/bodyAccelerations
     (e.g. the centripetal acceleration of a rigid rotation).
 
@@ -180,7 +180,7 @@ int main(int argc, char *argv[])
         }
 
         phases.correctBoundaryConditions();
-        phases.correctMixture();
+        phases.correctDensity();
         step.write();
         if (runTime.writeTime())
         {
@@ -197,6 +197,7 @@ int main(int argc, char *argv[])
     // The final state, also when endTime is not a write time
     if (!runTime.writeTime() && runTime.timeIndex() != runTime.startTimeIndex())
     {
+        phases.correctOutputs();
         runTime.writeNow();
     }
 

@@ -171,12 +171,23 @@ bool Foam::stepControl::accept
 
 void Foam::stepControl::write()
 {
-    runTime_.write();
+    const bool pendingNow =
+        pendingWrite_ > 0
+     && runTime_.value() >= pendingWrite_ - 1e-6*runTime_.deltaTValue();
+
+    // The output mixture fields (p, sigma, sigmaEq) when they are written,
+    // and every step if function objects may read them
     if
     (
-        pendingWrite_ > 0
-     && runTime_.value() >= pendingWrite_ - 1e-6*runTime_.deltaTValue()
+        runTime_.writeTime() || pendingNow
+     || !runTime_.functionObjects().empty()
     )
+    {
+        phases_.correctOutputs();
+    }
+
+    runTime_.write();
+    if (pendingNow)
     {
         if (!runTime_.writeTime())
         {

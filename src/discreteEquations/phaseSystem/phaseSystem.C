@@ -286,13 +286,28 @@ void Foam::phaseSystem::correctBoundaryConditions()
 }
 
 
-void Foam::phaseSystem::correctMixture()
+void Foam::phaseSystem::correctDensity()
 {
     scalarField& rhoM = rhoMixture_.primitiveFieldRef();
+    rhoM = 0;
+    forAll(phases_, k)
+    {
+        const scalarField& a = phases_[k].alpha().primitiveField();
+        const scalarField& rho = phases_[k].rho().primitiveField();
+        forAll(a, celli)
+        {
+            rhoM[celli] += a[celli]*rho[celli];
+        }
+    }
+    rhoMixture_.correctBoundaryConditions();
+}
+
+
+void Foam::phaseSystem::correctOutputs()
+{
     scalarField& pM = pMixture_.primitiveFieldRef();
     symmTensorField& sigma = sigma_.primitiveFieldRef();
 
-    rhoM = 0;
     pM = 0;
     sigma = symmTensor::zero;
 
@@ -300,13 +315,11 @@ void Foam::phaseSystem::correctMixture()
     {
         const hyperelasticPhase& ph = phases_[k].law();
         const scalarField& a = phases_[k].alpha().primitiveField();
-        const scalarField& rho = phases_[k].rho().primitiveField();
         const scalarField& p = phases_[k].p().primitiveField();
         const tensorField& A = phases_[k].A().primitiveField();
 
         forAll(a, celli)
         {
-            rhoM[celli] += a[celli]*rho[celli];
             pM[celli] += a[celli]*p[celli];
             sigma[celli] -= a[celli]*p[celli]*symmTensor::I;
             if (ph.solid())
@@ -329,10 +342,16 @@ void Foam::phaseSystem::correctMixture()
         sigmaEq[celli] = sqrt(1.5)*mag(dev(sigma[celli]));
     }
 
-    rhoMixture_.correctBoundaryConditions();
     pMixture_.correctBoundaryConditions();
     sigma_.correctBoundaryConditions();
     sigmaEq_.correctBoundaryConditions();
+}
+
+
+void Foam::phaseSystem::correctMixture()
+{
+    correctDensity();
+    correctOutputs();
 }
 
 
