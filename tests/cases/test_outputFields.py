@@ -1,0 +1,161 @@
+#!/usr/bin/python3
+"""The output mixture fields (p, sigma, sigmaEq) are current wherever they
+are read (phaseSystem::correctOutputs, stepControl::write).
+
+The solver computes them, the stress of every solid in every cell, only
+when they are written, or every step if the case has function objects.
+The case tests/cases/voidCells (1-D, copper and air, a copper trace moving
+through near-vacuum air, about 30 steps to 0.1 us) is run twice:
+
+- A: written every step, no function objects (the fields on disk at every
+  step are the reference);
+- B: written only at the end time (writeInterval 1000 steps: the end time
+  is not a write time, the solver's final write), with a fieldMinMax
+  function object on p and sigmaEq every step.
+
+Checks:
+- both runs reach their end time;
+- at every step, B's function object reports the minimum and maximum of p
+  and sigmaEq that A wrote at that time, to 1e-10 relative (the files
+  hold 12 and 13 significant digits; with the fields computed only at
+  write times, the function object would see the initial ones: p's
+  largest value 4.4e6 Pa after the first step against 1e5 Pa at the
+  start);
+- B's final p, sigma and sigmaEq equal A's at the end time to 1e-12 of each
+  field's largest magnitude.
+"""
+import os
+import re
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "lib"))
+import foamcase as fc                         # noqa: E402
+from checks import Checks                     # noqa: E402
+
+CASE = os.path.join(HERE, "voidCells")
+RUN_TIMEOUT = 300
+T_END = 1e-7
+TOL = 1e-12
+PRINT_TOL = 1e-10                 # 12-13 significant digits in the files
+FIELDS = ("p", "sigmaEq")
+
+FUNCTIONS = """
+functions
+{
+    minMax
+    {
+        type            fieldMinMax;
+        libs            (fieldFunctionObjects);
+        fields          (p sigmaEq);
+        mode            magnitude;
+        writeControl    timeStep;
+        writeInterval   1;
+    }
+}
+"""
+
+checks = Checks()
+
+
+def edit_control(case, functions):
+    path = os.path.join(case, "system", "controlDict")
+    text = open(path).read()
+    if functions:
+        text = re.sub(r"^writeInterval\s+1;", "writeInterval   1000;", text,
+                      flags=re.M)
+        text += FUNCTIONS
+    open(path, "w").write(text)
+
+
+def run(name, functions):
+    case = fc.copy_tutorial(CASE, name)
+    edit_control(case, functions)
+    fc.run(case, "./Allrun", log="log.Allrun", timeout=RUN_TIMEOUT)
+    return case
+
+
+def min_max_log(case):
+    """{(time name, field): (min, max)} from the fieldMinMax file."""
+    path = os.path.join(case, "postProcessing", "minMax", "0",
+                        "fieldMinMax.dat")
+    rows = {}
+    for line in open(path):
+        if line.startswith("#") or not line.strip():
+            continue
+        cols = line.split("\t")
+        time, field = float(cols[0]), cols[1].strip()
+        rows[(time, field)] = (float(cols[2]), float(cols[4]))
+    return rows
+
+
+def magnitude(values):
+    return np.abs(values) if values.ndim == 1 else \
+        np.sqrt(np.sum(values**2, axis=1))
+
+
+def main():
+    missing = fc.require_apps("impactFoam", "blockMesh", "setFields")
+    if missing:
+        checks.fail("outputFields_run", "%s not found on PATH (impactFoam "
+                    "not built or environment not sourced: . etc/bashrc)"
+                    % " ".join(missing))
+        checks.exit()
+    try:
+        a = run("outputFields_written", functions=False)
+        b = run("outputFields_functionObject", functions=True)
+    except fc.FoamError as e:
+        checks.fail("outputFields_run", e.summary)
+        checks.exit()
+
+    times_a = [name for _, name in fc.time_dirs(a)]
+    times_b = [name for _, name in fc.time_dirs(b)]
+    reached = (abs(float(times_a[-1]) - T_END) <= 1e-6 * T_END
+               and abs(float(times_b[-1]) - T_END) <= 1e-6 * T_END)
+    checks.check("outputFields_run", reached and len(times_a) > 10,
+                 "A wrote %d times, B %d; last at %s and %s s (end %g s)"
+                 % (len(times_a), len(times_b), times_a[-1], times_b[-1],
+                    T_END))
+
+    # B's function object against A's fields, step by step
+    fo = min_max_log(b)
+    worst, n, first_pmax = 0.0, 0, None
+    for t in times_a[1:]:
+        for field in FIELDS:
+            key = min((k for k in fo if k[1] == field),
+                      key=lambda k: abs(k[0] - float(t)))
+            if abs(key[0] - float(t)) > 1e-6 * float(t):
+                continue
+            values = magnitude(fc.read_field(a, t, field))
+            scale = max(np.max(values), 1e-300)
+            lo, hi = fo[key]
+            worst = max(worst, abs(lo - np.min(values)) / scale,
+                        abs(hi - np.max(values)) / scale)
+            n += 1
+            if field == "p" and first_pmax is None:
+                first_pmax = hi
+    checks.check("outputFields_functionObject",
+                 n >= 2 * (len(times_a) - 1) and worst <= PRINT_TOL,
+                 "%d step-field pairs of B's fieldMinMax against A's written "
+                 "fields: largest difference %.3e relative (bound %g); p's "
+                 "largest value after the first step %s Pa"
+                 % (n, worst, PRINT_TOL, "%.6g" % first_pmax
+                    if first_pmax is not None else "-"))
+
+    # The final write of B (not a write time) against A's
+    diffs = {}
+    for field in ("p", "sigma", "sigmaEq"):
+        fa = fc.read_field(a, times_a[-1], field)
+        fb = fc.read_field(b, times_b[-1], field)
+        diffs[field] = (np.max(np.abs(fa - fb))
+                        / max(np.max(np.abs(fa)), 1e-300))
+    checks.check("outputFields_finalWrite", max(diffs.values()) <= TOL,
+                 "B's fields at the end time against A's: %s (bound %g)"
+                 % (", ".join("%s %.3e" % kv for kv in diffs.items()), TOL))
+    checks.exit()
+
+
+if __name__ == "__main__":
+    main()
