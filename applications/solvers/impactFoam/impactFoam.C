@@ -20,8 +20,8 @@ Description
 
     Dictionaries: constant/phaseProperties (phases and their models),
     system/fvSchemes discreteEquations { riemannSolver HLLC; } and
-    gradSchemes (limited gradients), system/controlDict maxCo (default 0.6 at second order, 0.4 at first)
-    and maxDeltaT; optional constant/g (gravity) and constant/bodyAccelerations
+    gradSchemes (limited gradients), system/controlDict maxCo (default 0.6
+    at second order, 0.4 at first) and maxDeltaT; optional constant/g (gravity) and constant/bodyAccelerations
     (e.g. the centripetal acceleration of a rigid rotation).
 
 \*---------------------------------------------------------------------------*/
