@@ -25,7 +25,6 @@ Checks:
   field's largest magnitude.
 """
 import os
-import re
 import sys
 
 import numpy as np
@@ -60,19 +59,12 @@ functions
 checks = Checks()
 
 
-def edit_control(case, functions):
-    path = os.path.join(case, "system", "controlDict")
-    text = open(path).read()
-    if functions:
-        text = re.sub(r"^writeInterval\s+1;", "writeInterval   1000;", text,
-                      flags=re.M)
-        text += FUNCTIONS
-    open(path, "w").write(text)
-
-
 def run(name, functions):
     case = fc.copy_tutorial(CASE, name)
-    edit_control(case, functions)
+    if functions:
+        fc.set_entry(case, "system/controlDict", "writeInterval", "1000")
+        with open(os.path.join(case, "system", "controlDict"), "a") as f:
+            f.write(FUNCTIONS)
     fc.run(case, "./Allrun", log="log.Allrun", timeout=RUN_TIMEOUT)
     return case
 
