@@ -69,14 +69,18 @@ void Foam::cobasisTransport::addFace
     const std::vector<phaseSide>& own,
     const std::vector<phaseSide>& across,
     const demFaceAssembly& assembly,
-    const reconstruction& rec
+    const reconstruction& rec,
+    const cobasis::matrix* Q
 )
 {
     for (label k = 0; k < nPhases_; ++k)
     {
         if (!phases_.phase(k).solid()) continue;
 
-        const cobasis::vector vStar(assembly.vStar(k));
+        const cobasis::vector vStar
+        (
+            Q ? (*Q*assembly.vStar(k)).eval() : assembly.vStar(k)
+        );
         L_[k][c] += vStar*SfOut.transpose();
 
         const double flux = vStar.dot(SfOut);
@@ -91,7 +95,14 @@ void Foam::cobasisTransport::addFace
         (
             toEigen(phases_.A(k)[c]) + rec.dtA(k, c)
         );
-        advection_[k][c] += flux*(up.A - Ac);
+        if (Q)
+        {
+            advection_[k][c] += flux*(up.A*Q->transpose() - Ac);
+        }
+        else
+        {
+            advection_[k][c] += flux*(up.A - Ac);
+        }
     }
 }
 

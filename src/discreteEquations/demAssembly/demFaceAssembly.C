@@ -145,7 +145,8 @@ void Foam::demFaceAssembly::solveFace
     const std::vector<phaseSide>& sideL,
     const std::vector<phaseSide>& sideR,
     const cobasis::matrix& R,
-    const bool fallback
+    const bool fallback,
+    const bool identical
 )
 {
     const riemannSolver& solver = fallback ? fallbackRiemann_() : riemann_();
@@ -193,10 +194,33 @@ void Foam::demFaceAssembly::solveFace
                 return;
             }
 
-            const riemannState L(faceFrameState(k, sl, R, n));
-            const riemannState Rs(faceFrameState(j, sr, R, n));
-
-            riemannSolution sol = solver.solve(L, Rs, k == j);
+            riemannSolution sol;
+            if (identical)
+            {
+                // Equal states (then k == j): the consistent solution
+                riemannState K;
+                K.rho = sl.rho;
+                K.v = R*sl.U;
+                K.s = R*(sl.sigma*n);
+                K.E = sl.E;
+                sol.uStar = K.v(0);
+                sol.tStar = K.s;
+                sol.vStarL = K.v;
+                sol.vStarR = K.v;
+                riemannSolver::physicalFlux
+                (
+                    K, sol.massFlux, sol.momentumFlux, sol.energyFlux
+                );
+            }
+            else
+            {
+                sol = solver.solve
+                (
+                    faceFrameState(k, sl, R, n),
+                    faceFrameState(j, sr, R, n),
+                    k == j
+                );
+            }
             if (k == j)
             {
                 limitFailedTension(k, sl, sr, sol);
@@ -360,6 +384,28 @@ void Foam::demFaceAssembly::addToCell
     }
 }
 
+
+
+void Foam::demFaceAssembly::addImageToCell
+(
+    const label c,
+    const scalar magSf,
+    const cobasis::matrix& Q
+)
+{
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        const faceContribution& fc = faceResult_[k];
+        dAlpha_[k][c] -= magSf*fc.dAlpha[0];
+        dMass_[k][c] -= magSf*fc.dMass[0];
+        dMomentum_[k][c] -= magSf*(Q*fc.dMomentum[0]);
+        dEnergy_[k][c] -= magSf*fc.dEnergy[0];
+        for (size_t i = 0; i < dMassCarried_[k].size(); ++i)
+        {
+            dMassCarried_[k][i][c] -= magSf*fc.dMassCarried[0][i];
+        }
+    }
+}
 
 
 void Foam::demFaceAssembly::internalContacts
