@@ -112,11 +112,15 @@ Foam::scalar Foam::hyperelasticPhase::a2Max
     }
 
     Eigen::SelfAdjointEigenSolver<cobasis::matrix> eig(A.transpose()*A);
+    const cobasis::matrix& V = eig.eigenvectors();
     scalar a2 = 0;
     for (int d = 0; d < 3; ++d)
     {
-        const cobasis::vector n(eig.eigenvectors().col(d));
-        a2 = max(a2, waveSpeeds2(rho, p, A, n)(2));
+        const cobasis::matrix Q(acousticTensor(rho, p, A, V.col(d)));
+        for (int j = 0; j < 3; ++j)
+        {
+            a2 = max(a2, V.col(j).dot(Q*V.col(j)));
+        }
     }
     return a2;
 }
