@@ -93,7 +93,8 @@ Foam::riemannState Foam::demFaceAssembly::faceFrameState
     const label k,
     const phaseSide& s,
     const cobasis::matrix& R,
-    const cobasis::vector& n
+    const cobasis::vector& n,
+    const bool withG
 ) const
 {
     riemannState K;
@@ -103,7 +104,10 @@ Foam::riemannState Foam::demFaceAssembly::faceFrameState
     K.E = s.E;
     K.a = s.a;
     K.cT = s.cT;
-    K.G = phases_.phase(k).eos().fundamentalDerivative(s.rho, s.p);
+    K.G =
+        withG
+      ? phases_.phase(k).eos().fundamentalDerivative(s.rho, s.p)
+      : 0;
     K.solid = s.solid;
     return K;
 }
@@ -150,6 +154,7 @@ void Foam::demFaceAssembly::solveFace
 )
 {
     const riemannSolver& solver = fallback ? fallbackRiemann_() : riemann_();
+    const bool withG = solver.usesFundamentalDerivative();
 
     for (label k = 0; k < nPhases_; ++k)
     {
@@ -216,8 +221,8 @@ void Foam::demFaceAssembly::solveFace
             {
                 sol = solver.solve
                 (
-                    faceFrameState(k, sl, R, n),
-                    faceFrameState(j, sr, R, n),
+                    faceFrameState(k, sl, R, n, withG),
+                    faceFrameState(j, sr, R, n, withG),
                     k == j
                 );
             }
