@@ -100,6 +100,20 @@ Foam::vonMisesReturn::result Foam::vonMisesReturn::correct
     const scalar rhoByRho0 = A.determinant();
     const cobasis::matrix g(cobasis::g(A));
 
+    // Well inside the yield surface: f(1) <= 0 below as well, so no
+    // eigenproblem. |S| is a function of the invariants of g (the elastic
+    // laws are isotropic), so |S(g)| equals the |S| of g's eigenvalues
+    // that f(1) takes to round-off (1e-15), far inside the margin; a
+    // state within the margin takes the full test below
+    if
+    (
+        sqrt(1.5)*elastic.S(g, rhoByRho0).norm()
+      < (1 - 1e-9)*law.sigmaY(epsP, 0, T)
+    )
+    {
+        return {0, 0};
+    }
+
     Eigen::SelfAdjointEigenSolver<cobasis::matrix> eig(g);
     const cobasis::vector h(eig.eigenvalues().array().log());
 
