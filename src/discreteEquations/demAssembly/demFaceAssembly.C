@@ -422,6 +422,12 @@ void Foam::demFaceAssembly::internalContacts
     const reconstruction& rec
 )
 {
+    // A single phase has alpha = 1 at the centre and on every face
+    if (nPhases_ == 1)
+    {
+        return;
+    }
+
     // Time-centred alphas of the cell first: most cells hold the same
     // alphas at the centre and on the face, and need no contact
     rec.centreAlphas(c, alphaScratch_);

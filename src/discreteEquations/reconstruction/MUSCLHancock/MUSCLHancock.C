@@ -463,23 +463,12 @@ void Foam::reconstructions::MUSCLHancock::centreAlphas
     std::vector<double>& alpha
 ) const
 {
-    // A minor phase keeps its cell value; the largest closes the sum
-    scalar sumAlpha = 0;
-    label main = 0;
+    // Computed once per cell and step by update
+    const double* a = &centreAlpha_[c*nPhases_];
     for (label k = 0; k < nPhases_; ++k)
     {
-        const scalar a = phases_.alpha(k)[c];
-        alpha[k] =
-            a >= phases_.alphaMinor()
-          ? min(max(a + slopes_[k][c].dtAlpha, 0.0), 1.0)
-          : a;
-        if (alpha[k] > alpha[main]) main = k;
+        alpha[k] = a[k];
     }
-    for (label k = 0; k < nPhases_; ++k)
-    {
-        if (k != main) sumAlpha += alpha[k];
-    }
-    alpha[main] = 1 - sumAlpha;
 }
 
 
@@ -726,6 +715,30 @@ void Foam::reconstructions::MUSCLHancock::update
                 sl.dtA.setZero();
             }
         }
+    }
+
+    // Time-centred alphas: a minor phase keeps its cell value; the
+    // largest closes the sum
+    centreAlpha_.resize(nCells*nPhases_);
+    for (label c = 0; c < nCells; ++c)
+    {
+        double* alpha = &centreAlpha_[c*nPhases_];
+        scalar sumAlpha = 0;
+        label main = 0;
+        for (label k = 0; k < nPhases_; ++k)
+        {
+            const scalar a = phases_.alpha(k)[c];
+            alpha[k] =
+                a >= phases_.alphaMinor()
+              ? min(max(a + slopes_[k][c].dtAlpha, 0.0), 1.0)
+              : a;
+            if (alpha[k] > alpha[main]) main = k;
+        }
+        for (label k = 0; k < nPhases_; ++k)
+        {
+            if (k != main) sumAlpha += alpha[k];
+        }
+        alpha[main] = 1 - sumAlpha;
     }
 }
 
