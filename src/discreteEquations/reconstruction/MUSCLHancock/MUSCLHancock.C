@@ -648,7 +648,11 @@ void Foam::reconstructions::MUSCLHancock::update
                 {
                     sl.gU.setZero();
                 }
-                for (int i = 0; i < 3; ++i) sl.gA[i].setZero();
+                if (ph.solid())
+                {
+                    // (a fluid's cobasis slopes are never read)
+                    for (int i = 0; i < 3; ++i) sl.gA[i].setZero();
+                }
                 sl.dtRho = 0;
                 sl.dtP = 0;
                 sl.dtU.setZero();
@@ -663,15 +667,11 @@ void Foam::reconstructions::MUSCLHancock::update
             sl.gRho = toEigen(gRho[c]);
             sl.gP = toEigen(gP[c]);
             sl.gU = toEigen(gradU[c]);
-            for (int i = 0; i < 3; ++i)
+            if (ph.solid())
             {
-                if (ph.solid())
+                for (int i = 0; i < 3; ++i)
                 {
                     sl.gA[i] = toEigen(dAdx_[i][c]);
-                }
-                else
-                {
-                    sl.gA[i].setZero();
                 }
             }
             // Primitive equations, with L_ij = du_i/dx_j = gU(j, i)
@@ -813,7 +813,12 @@ void Foam::reconstructions::MUSCLHancock::faceState
         sk.rho = rhoc + sl.gRho.dot(de) + sl.dtRho;
         sk.p = pc + sl.gP.dot(de) + sl.dtP;
         sk.U = toEigen(Uc) + sl.gU.transpose()*de + sl.dtU;
-        sk.A = Ac + de(0)*sl.gA[0] + de(1)*sl.gA[1] + de(2)*sl.gA[2] + sl.dtA;
+        // A fluid's cobasis is carried along unused (its stress is -p I)
+        sk.A =
+            ph.solid()
+          ? (Ac + de(0)*sl.gA[0] + de(1)*sl.gA[1] + de(2)*sl.gA[2] + sl.dtA)
+            .eval()
+          : Ac;
 
         if
         (
