@@ -9,7 +9,6 @@ Foam::cellStates::cellStates(const phaseSystem& phases)
     phases_(phases),
     E_(phases.size()),
     a_(phases.size()),
-    ch2_(phases.size()),
     sigma_(phases.size())
 {
     const label nCells = phases.mesh().nCells();
@@ -17,7 +16,6 @@ Foam::cellStates::cellStates(const phaseSystem& phases)
     {
         E_[k].resize(nCells);
         a_[k].resize(nCells);
-        ch2_[k].resize(nCells);
         sigma_[k].resize(nCells);
     }
 }
@@ -46,7 +44,6 @@ void Foam::cellStates::update()
             double e;
             ph.sigmaAndE(rho[celli], p[celli], Ac, sigma_[k][celli], e);
             E_[k][celli] = e + 0.5*magSqr(U[celli]);
-            ch2_[k][celli] = ph.eos().c2(rho[celli], p[celli]);
 
             // The acoustic eigenproblem for the phases that set the time
             // step; a minor phase (a trace is unstrained) takes the
@@ -57,7 +54,7 @@ void Foam::cellStates::update()
             a_[k][celli] = std::sqrt
             (
                 alpha[celli] < aMinor
-              ? max(ch2_[k][celli], scalar(0))
+              ? max(ph.eos().c2(rho[celli], p[celli]), scalar(0))
               + 4.0/3.0*cT2
               : ph.a2Max(rho[celli], p[celli], Ac)
             );

@@ -691,7 +691,7 @@ void Foam::reconstructions::MUSCLHancock::update
             sl.dtRho = -halfDt*(u.dot(sl.gRho) + rho[c]*divU);
             sl.dtP =
                 -halfDt
-               *(u.dot(sl.gP) + rho[c]*cells_.ch2(k, c)*divU);
+               *(u.dot(sl.gP) + rho[c]*ph.eos().c2(rho[c], p[c])*divU);
             sl.dtU = -halfDt*(L*u - divSigma/rho[c]);
             if (acceleration)
             {
@@ -837,7 +837,7 @@ void Foam::reconstructions::MUSCLHancock::faceState
         // a_f^2 = c_h^2(face) + (a_cell^2 - c_h^2(cell)), >= a_cell^2/4
         const double ac2 = sqr(cells_.a(k, celli));
         const double a2 =
-            ph.eos().c2(sk.rho, sk.p) + ac2 - cells_.ch2(k, celli);
+            ph.eos().c2(sk.rho, sk.p) + ac2 - ph.eos().c2(rhoc, pc);
         sk.a = std::sqrt(max(a2, 0.25*ac2));
     }
     markMinor(s);
