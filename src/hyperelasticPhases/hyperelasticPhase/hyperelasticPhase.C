@@ -113,9 +113,15 @@ Foam::scalar Foam::hyperelasticPhase::a2Max
 
     Eigen::SelfAdjointEigenSolver<cobasis::matrix> eig(A.transpose()*A);
     const cobasis::matrix& V = eig.eigenvectors();
+    const bool isotropic = elastic_->isotropic();
     scalar a2 = 0;
     for (int d = 0; d < 3; ++d)
     {
+        if (!isotropic)
+        {
+            a2 = max(a2, waveSpeeds2(rho, p, A, V.col(d))(2));
+            continue;
+        }
         const cobasis::matrix Q(acousticTensor(rho, p, A, V.col(d)));
         for (int j = 0; j < 3; ++j)
         {
