@@ -24,11 +24,8 @@ Foam::demFaceAssembly::demFaceAssembly
     nPhases_(phases.size()),
     riemann_(riemannSolver::New(dict)),
     fallbackRiemann_(riemannSolver::New(fallbackDict())),
-    dAlpha_(nPhases_),
-    dMass_(nPhases_),
-    dMomentum_(nPhases_),
-    dEnergy_(nPhases_),
-    dMassCarried_(nPhases_),
+    sums_(nPhases_),
+    stride_(nPhases_),
     faceResult_(nPhases_),
     alphaScratch_(nPhases_),
     stamp_(0)
@@ -40,15 +37,8 @@ Foam::demFaceAssembly::demFaceAssembly
     {
         damageIndex_[k] = phases[k].damageIndex();
         failure_[k] = &phases[k].failure();
-        dAlpha_[k].resize(nCells);
-        dMass_[k].resize(nCells);
-        dMomentum_[k].resize(nCells);
-        dEnergy_[k].resize(nCells);
-        dMassCarried_[k].resize(phases[k].nCarried());
-        for (auto& d : dMassCarried_[k])
-        {
-            d.resize(nCells);
-        }
+        stride_[k] = iCarried + phases[k].nCarried();
+        sums_[k].resize(nCells*stride_[k]);
     }
 }
 
@@ -120,17 +110,7 @@ void Foam::demFaceAssembly::reset()
     const label nCells = phases_.mesh().nCells();
     for (label k = 0; k < nPhases_; ++k)
     {
-        std::fill(dAlpha_[k].begin(), dAlpha_[k].end(), 0.0);
-        std::fill(dMass_[k].begin(), dMass_[k].end(), 0.0);
-        std::fill(dEnergy_[k].begin(), dEnergy_[k].end(), 0.0);
-        for (auto& d : dMassCarried_[k])
-        {
-            std::fill(d.begin(), d.end(), 0.0);
-        }
-        for (label c = 0; c < nCells; ++c)
-        {
-            dMomentum_[k][c].setZero();
-        }
+        std::fill(sums_[k].begin(), sums_[k].end(), 0.0);
     }
 
     // The time-centred cell states of the last step are stale
@@ -378,13 +358,17 @@ void Foam::demFaceAssembly::addToCell
     for (label k = 0; k < nPhases_; ++k)
     {
         const faceContribution& fc = faceResult_[k];
-        dAlpha_[k][c] += magSf*fc.dAlpha[side];
-        dMass_[k][c] += magSf*fc.dMass[side];
-        dMomentum_[k][c] += magSf*fc.dMomentum[side];
-        dEnergy_[k][c] += magSf*fc.dEnergy[side];
-        for (size_t i = 0; i < dMassCarried_[k].size(); ++i)
+        double* s = sums(k, c);
+        s[iAlpha] += magSf*fc.dAlpha[side];
+        s[iMass] += magSf*fc.dMass[side];
+        for (int j = 0; j < 3; ++j)
         {
-            dMassCarried_[k][i][c] += magSf*fc.dMassCarried[side][i];
+            s[iMomentum + j] += magSf*fc.dMomentum[side](j);
+        }
+        s[iEnergy] += magSf*fc.dEnergy[side];
+        for (int i = 0; i < stride_[k] - iCarried; ++i)
+        {
+            s[iCarried + i] += magSf*fc.dMassCarried[side][i];
         }
     }
 }
@@ -401,13 +385,18 @@ void Foam::demFaceAssembly::addImageToCell
     for (label k = 0; k < nPhases_; ++k)
     {
         const faceContribution& fc = faceResult_[k];
-        dAlpha_[k][c] -= magSf*fc.dAlpha[0];
-        dMass_[k][c] -= magSf*fc.dMass[0];
-        dMomentum_[k][c] -= magSf*(Q*fc.dMomentum[0]);
-        dEnergy_[k][c] -= magSf*fc.dEnergy[0];
-        for (size_t i = 0; i < dMassCarried_[k].size(); ++i)
+        double* s = sums(k, c);
+        const cobasis::vector m(magSf*(Q*fc.dMomentum[0]));
+        s[iAlpha] -= magSf*fc.dAlpha[0];
+        s[iMass] -= magSf*fc.dMass[0];
+        for (int j = 0; j < 3; ++j)
         {
-            dMassCarried_[k][i][c] -= magSf*fc.dMassCarried[0][i];
+            s[iMomentum + j] -= m(j);
+        }
+        s[iEnergy] -= magSf*fc.dEnergy[0];
+        for (int i = 0; i < stride_[k] - iCarried; ++i)
+        {
+            s[iCarried + i] -= magSf*fc.dMassCarried[0][i];
         }
     }
 }
@@ -456,9 +445,13 @@ void Foam::demFaceAssembly::internalContacts
     for (label k = 0; k < nPhases_; ++k)
     {
         const faceContribution& fc = faceResult_[k];
-        dAlpha_[k][c] += magSf*(fc.dAlpha[0] + fc.dAlpha[1]);
-        dMomentum_[k][c] += magSf*(fc.dMomentum[0] + fc.dMomentum[1]);
-        dEnergy_[k][c] += magSf*(fc.dEnergy[0] + fc.dEnergy[1]);
+        double* s = sums(k, c);
+        s[iAlpha] += magSf*(fc.dAlpha[0] + fc.dAlpha[1]);
+        for (int j = 0; j < 3; ++j)
+        {
+            s[iMomentum + j] += magSf*(fc.dMomentum[0](j) + fc.dMomentum[1](j));
+        }
+        s[iEnergy] += magSf*(fc.dEnergy[0] + fc.dEnergy[1]);
     }
 }
 
