@@ -56,6 +56,12 @@ END = 10e-6
 WRITE = 2e-6
 FIELD_TOL = 1e-6
 PROFILE_TOL = 1e-9
+PAIRED = "Wedge faces: back as the image of front"
+
+
+def log_says(case, text):
+    """Whether the case's solver log holds the line text"""
+    return text in open(os.path.join(case, "log.impactFoam")).read()
 
 
 def run_case(name, images, np_=1):
@@ -99,10 +105,8 @@ def main():
     a = run_case("wedgeImages_yes", True)
     b = run_case("wedgeImages_no", False)
 
-    logA = open(os.path.join(a, "log.impactFoam")).read()
-    logB = open(os.path.join(b, "log.impactFoam")).read()
-    paired = "Wedge faces: back as the image of front" in logA
-    solved = "Wedge faces: each solved (wedgeImages no)" in logB
+    paired = log_says(a, PAIRED)
+    solved = log_says(b, "Wedge faces: each solved (wedgeImages no)")
     checks.check("wedgeImages_paired", paired and solved,
                  "default run pairs the wedge faces: %s; wedgeImages no "
                  "solves each: %s" % (paired, solved))
@@ -114,14 +118,13 @@ def main():
                  "%d fields at %d writes; largest difference %.2e of the "
                  "field's magnitude (%s; bound %.0e)"
                  % (compared, writes, worst, worstAt, FIELD_TOL))
-    times = [t for t, n in foamcase.time_dirs(a) if t > 0]
 
     def profile(case):
         path = os.path.join(case, "postProcessing", "rodProfile",
                             "copper.csv")
         return np.genfromtxt(path, delimiter=",", names=True)
     pa, pb = profile(a), profile(b)
-    same_rows = len(pa) == len(pb) and len(pa) == len(times) + 1
+    same_rows = len(pa) == len(pb) and len(pa) == writes + 1
     dL = np.abs(pa["length"] - pb["length"]).max()/pa["length"].max()
     dR = np.abs(pa["maxRadius"] - pb["maxRadius"]).max() \
         / pa["maxRadius"].max()
@@ -134,8 +137,7 @@ def main():
                     pa["t"][-1]*1e6, dL, dR, PROFILE_TOL))
 
     p = run_case("wedgeImages_parallel", True, np_=2)
-    logP = open(os.path.join(p, "log.impactFoam")).read()
-    pairedP = "Wedge faces: back as the image of front" in logP
+    pairedP = log_says(p, PAIRED)
     worst, worstAt, compared, writes = field_differences(p, a)
     checks.check("wedgeImages_parallel",
                  pairedP and compared > 0 and writes == round(END/WRITE)
