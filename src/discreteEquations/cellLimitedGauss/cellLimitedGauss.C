@@ -50,11 +50,21 @@ void Foam::cellLimitedGauss::grad
     vMax_ = v;
     vMin_ = v;
 
+    // Only the cells that read their slope need it
+    const auto skip = [active](const label c)
+    {
+        return active && !(*active)[c];
+    };
+
     // Gauss sums and the neighbours' range, internal faces
     forAll(nei, facei)
     {
         const label o = own[facei];
         const label n = nei[facei];
+        if (skip(o) && skip(n))
+        {
+            continue;
+        }
         const vector Sv
         (
             Sf[facei]*(w[facei]*(v[o] - v[n]) + v[n])
@@ -102,6 +112,11 @@ void Foam::cellLimitedGauss::grad
 
     for (label c = 0; c < nCells; ++c)
     {
+        if (skip(c))
+        {
+            g[c] = Zero;
+            continue;
+        }
         g[c] /= V[c];
         vMax_[c] -= v[c];
         vMin_[c] -= v[c];
@@ -112,7 +127,7 @@ void Foam::cellLimitedGauss::grad
     limiter_ = 1;
     const auto limitFace = [&](const label c, const vector& dx)
     {
-        if (active && !(*active)[c])
+        if (skip(c))
         {
             return;
         }

@@ -54,6 +54,7 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
     slopes_(nPhases_),
     alphaScratch_(nPhases_),
     slopeCells_(mesh_.nCells(), false),
+    alphaCells_(mesh_.nCells(), false),
     gauss_(mesh_)
 {
     if (!(alphaCompression_ >= 1 && alphaCompression_ <= 4))
@@ -543,20 +544,24 @@ void Foam::reconstructions::MUSCLHancock::update
 
         // The cells that take slopes of rho, p and A: not minor, not first
         // order (the loop below zeroes the others)
+        // The cells that read the alpha slope: a phase below alphaMinor in
+        // the cell keeps its cell value at the faces and in the time-
+        // centred state, and takes no THINC profile
         for (label c = 0; c < nCells; ++c)
         {
-            slopeCells_[c] =
-                !(minAlpha[c] < phases_.alphaMinor()) && !firstOrderCell(c);
+            const bool first = firstOrderCell(c);
+            slopeCells_[c] = !(minAlpha[c] < phases_.alphaMinor()) && !first;
+            alphaCells_[c] = !(alpha[c] < phases_.alphaMinor()) && !first;
         }
 
         // Slopes of alpha, rho and p: fvSchemes' gradSchemes; the
         // tutorials' "cellLimited Gauss linear 1" by cellLimitedGauss, the
-        // same values without temporary fields, limited only where used
-        // (alpha: everywhere, THINC and the face alphas of minor cells
-        // read it). A single phase has alpha = 1: no slope
+        // same values without temporary fields, computed and limited only
+        // where read (zero elsewhere). A single phase has alpha = 1: no
+        // slope
         if (nPhases_ > 1)
         {
-            slopes(alpha, gAlpha_, nullptr);
+            slopes(alpha, gAlpha_, &alphaCells_);
         }
         else
         {
