@@ -402,6 +402,7 @@ void Foam::demSolver::newState(const scalar dt, conservedState& q) const
         }
 
         const bool solid = phases_.phase(k).solid();
+        const scalar alphaTrace = phases_.alphaTrace();
         const scalarField& alpha = phases_.alpha(k).primitiveField();
         const scalarField& rho = phases_.rho(k).primitiveField();
         const tensorField& A = phases_.A(k).primitiveField();
@@ -445,7 +446,14 @@ void Foam::demSolver::newState(const scalar dt, conservedState& q) const
             }
 
             const cobasis::matrix Ac(toEigen(A[c]));
-            if (solid)
+            if (solid && q.alpha[k][c] < alphaTrace)
+            {
+                // A trace after the step: the relaxation resets its cobasis
+                // unstrained and pays its energy (mechanicalRelaxation::
+                // relaxTraces), so it is not transported
+                q.A[k][c] = Ac;
+            }
+            else if (solid)
             {
                 // Time-centred cobasis in the stretching term
                 q.A[k][c] = cobasis_.update

@@ -18,6 +18,7 @@ Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
     v0_(nPhases_),
     eh0_(nPhases_),
     alpha_(nPhases_),
+    ee_(nPhases_, 0),
     trace_(nPhases_),
     isentropic_(nPhases_, false),
     failed_(nPhases_, false),
@@ -554,7 +555,13 @@ void Foam::mechanicalRelaxation::relaxVelocity
         const hyperelasticPhase& ph = phases_.phase(k);
         v0_[k] = alpha_[k]/m_[k];
         cobasis::matrix& A = q.A[k][c];
-        if (ph.solid())
+
+        // A solid trace is reset unstrained by relaxTraces, which pays the
+        // change of its whole energy: its cobasis is not made compatible
+        // and no elastic energy is split off here (the same payment up to
+        // round-off)
+        const bool reset = ph.solid() && trace_[k];
+        if (ph.solid() && !reset)
         {
             const scalar detA = A.determinant();
             if (!(detA > 0))
@@ -575,9 +582,10 @@ void Foam::mechanicalRelaxation::relaxVelocity
         // Own kinetic energy out, the share of the dissipated kinetic
         // energy 1/2 |u_k - u|^2 in: e_k never decreases
         const cobasis::vector uk(q.momentum[k][c]/m_[k]);
+        ee_[k] = reset ? 0 : ph.elasticEnergy(A);
         eh0_[k] =
             q.energy[k][c]/m_[k] - 0.5*uk.squaredNorm()
-          + 0.5*(uk - u).squaredNorm() - ph.elasticEnergy(A);
+          + 0.5*(uk - u).squaredNorm() - ee_[k];
     }
 }
 
@@ -702,7 +710,9 @@ void Foam::mechanicalRelaxation::relaxTraces
             continue;
         }
         scalar pk = max(pStar, ph.eos().pMin(rho) + 1);
-        const scalar eeOld = ph.elasticEnergy(q.A[k][c]);
+        // The elastic energy relaxVelocity split off (its A is unchanged
+        // since)
+        const scalar eeOld = ee_[k];
         if (ph.solid())
         {
             q.A[k][c] = cobasis::unstrained(rho, ph.rho0());
