@@ -220,6 +220,65 @@ TEST(hyperelasticPhase, a2MaxIsLargestEigenvalueOverPrincipalDirections)
 }
 
 
+TEST(hyperelasticPhase, unstrainedCobasisHasNoShear)
+{
+    // sigmaAndE takes a cobasis s I (cobasis::isUnstrained) as stress free
+    // with no elastic energy, without evaluating the law: the general path
+    // must give the same to round-off for every law and density, and a
+    // cobasis with the smallest shear must take the general path
+    const std::string eos =
+        "equationOfState { type stiffenedGas; gamma 4.22; pInf 3.42e10; }";
+    const scalar mu = 4.5e10;
+    const std::string laws[] =
+    {
+        copperText(-1), copperText(0), copperText(0.5),
+        "type solid;" + eos
+      + "elasticity { type metal; rho0 8900; mu 4.5e10; }",
+        "type solid;" + eos
+      + "elasticity { type neoHookean; rho0 8900; mu 4.5e10; }"
+    };
+    scalar worstS = 0, worstE = 0;
+    for (const std::string& law : laws)
+    {
+        const hyperelasticPhase phase("copper", dictFrom(law));
+        for (const scalar s : {0.7, 0.93, 1.0, 1.04, 1.3})
+        {
+            const matrix A(s*matrix::Identity());
+            ASSERT_TRUE(cobasis::isUnstrained(A));
+            const scalar rho = rho0Cu*A.determinant();
+            const scalar p = 2e9;
+            matrix sigma;
+            scalar e;
+            phase.sigmaAndE(rho, p, A, sigma, e);
+            EXPECT_EQ(sigma, (-p*matrix::Identity()).eval());
+            EXPECT_EQ(e, phase.eos().e(rho, p));
+
+            // The general path
+            const matrix g(cobasis::g(A));
+            const matrix S(phase.elastic().S(g, A.determinant()));
+            const scalar ee = phase.elastic().energy(g);
+            worstS = max(worstS, maxAbs(S)/mu);
+            worstE = max(worstE, mag(ee)/(mu/rho0Cu));
+            EXPECT_LT(maxAbs(S), 1e-13*mu) << law << " s = " << s;
+            EXPECT_LT(mag(ee), 1e-13*mu/rho0Cu) << law << " s = " << s;
+
+            // The smallest shear is not unstrained
+            matrix As(A);
+            As(0, 1) = 1e-3*s;
+            EXPECT_FALSE(cobasis::isUnstrained(As));
+            phase.sigmaAndE(rho, p, As, sigma, e);
+            EXPECT_GT(mag(sigma(0, 1)), 1e-4*mu) << law;
+        }
+    }
+    EXPECT_FALSE(cobasis::isUnstrained(matrix::Zero()));
+    std::printf
+    (
+        "[ measured ] general path at A = s I: |S|/mu %.2e, e_e/(mu/rho0)"
+        " %.2e\n", worstS, worstE
+    );
+}
+
+
 TEST(hyperelasticPhase, energyPressureRoundTrip)
 {
     std::mt19937 gen(41);
