@@ -12,7 +12,8 @@ Foam::linearVelocityGradient::linearVelocityGradient
     mesh_(mesh),
     stencil_(mesh, kinds),
     limit_(limit),
-    invG_(mesh.nCells(), Zero)
+    invG_(mesh.nCells(), Zero),
+    dByMagSqrD_(mesh.nInternalFaces())
 {
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
@@ -22,6 +23,7 @@ Foam::linearVelocityGradient::linearVelocityGradient
     forAll(nei, facei)
     {
         const vector d(C[nei[facei]] - C[own[facei]]);
+        dByMagSqrD_[facei] = d/magSqr(d);
         const symmTensor wdd(sqr(d)/magSqr(d));
         G[own[facei]] += wdd;
         G[nei[facei]] += wdd;
@@ -74,7 +76,6 @@ void Foam::linearVelocityGradient::calculate
 {
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
-    const vectorField& C = mesh_.cellCentres();
     const volVectorField& Cv = mesh_.C();
 
     gradU.setSize(mesh_.nCells());
@@ -82,9 +83,8 @@ void Foam::linearVelocityGradient::calculate
 
     forAll(nei, facei)
     {
-        const vector d(C[nei[facei]] - C[own[facei]]);
         const vector dU(U[nei[facei]] - U[own[facei]]);
-        const tensor wddU((d/magSqr(d))*dU);
+        const tensor wddU(dByMagSqrD_[facei]*dU);
         gradU[own[facei]] += wddU;
         gradU[nei[facei]] += wddU;
     }
