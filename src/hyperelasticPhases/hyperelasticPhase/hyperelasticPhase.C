@@ -111,21 +111,36 @@ Foam::scalar Foam::hyperelasticPhase::a2Max
         return eos_->c2(rho, p);
     }
 
-    Eigen::SelfAdjointEigenSolver<cobasis::matrix> eig(A.transpose()*A);
-    const cobasis::matrix& V = eig.eigenvectors();
-    const bool isotropic = elastic_->isotropic();
     scalar a2 = 0;
-    for (int d = 0; d < 3; ++d)
+    if (!elastic_->isotropic())
     {
-        if (!isotropic)
+        Eigen::SelfAdjointEigenSolver<cobasis::matrix> eig(A.transpose()*A);
+        const cobasis::matrix& V = eig.eigenvectors();
+        for (int d = 0; d < 3; ++d)
         {
             a2 = max(a2, waveSpeeds2(rho, p, A, V.col(d))(2));
-            continue;
         }
-        const cobasis::matrix Q(acousticTensor(rho, p, A, V.col(d)));
+        return a2;
+    }
+
+    // Along principal direction d the acoustic tensor is
+    // c_h^2 e_d (x) e_d + Qe(e_d)/rho, diagonal in G's eigenbasis: its
+    // eigenvalues need only G's eigenvalues (elasticModel::principalQe)
+    const Eigen::SelfAdjointEigenSolver<cobasis::matrix> eig
+    (
+        A.transpose()*A,
+        Eigen::EigenvaluesOnly
+    );
+    const cobasis::matrix Qp
+    (
+        elastic_->principalQe(eig.eigenvalues(), A.determinant())
+    );
+    const scalar c2 = eos_->c2(rho, p);
+    for (int d = 0; d < 3; ++d)
+    {
         for (int j = 0; j < 3; ++j)
         {
-            a2 = max(a2, V.col(j).dot(Q*V.col(j)));
+            a2 = max(a2, (j == d ? c2 : 0) + Qp(j, d)/rho);
         }
     }
     return a2;

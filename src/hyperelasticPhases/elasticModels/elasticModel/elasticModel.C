@@ -55,3 +55,19 @@ Foam::cobasis::matrix Foam::elasticModel::Qe
     }
     return 0.5*(Q + Q.transpose());
 }
+
+
+Foam::cobasis::matrix Foam::elasticModel::principalQe
+(
+    const cobasis::vector& Lambda,
+    const scalar
+) const
+{
+    const cobasis::matrix U(Lambda.cwiseSqrt().asDiagonal());
+    cobasis::matrix Qp;
+    for (int d = 0; d < 3; ++d)
+    {
+        Qp.col(d) = Qe(U, cobasis::vector::Unit(d)).diagonal();
+    }
+    return Qp;
+}

@@ -169,6 +169,52 @@ Foam::cobasis::matrix Foam::elasticModels::separable::Qe
 }
 
 
+Foam::cobasis::matrix Foam::elasticModels::separable::principalQe
+(
+    const cobasis::vector& Lambda,
+    const scalar detA
+) const
+{
+    // Qe above with G = diag(Lambda), n = e_d: every vector is along a
+    // basis vector, so Q is diagonal. With g_i = s Lambda_i,
+    // j1 = sum g_i, j2 = sum g_i^2, r = det A:
+    //   k != d:  Q_kk = mu r g_k (c1 j1 + a (g_d + g_k))
+    //   k == d:  Q_dd = -mu r (-beta_d + dB_d), with
+    //     beta_d = c1 j1 (g_d - j1/3) + a (g_d^2 - j2/3)   (B n = beta_d n)
+    //     dj1 = -2 g_d + 2/3 j1,   dj2 = -4 g_d^2 + 4/3 j2,
+    //     dB_d = c1 (dj1 (g_d - j1/3) + j1 (-4/3 g_d - dj1/3))
+    //          + a (-8/3 g_d^2 - dj2/3)
+    const scalar r = detA;
+    const scalar s = std::cbrt(1/(r*r));
+    const cobasis::vector g(s*Lambda);
+    const scalar j1 = g.sum();
+    const scalar j2 = g.squaredNorm();
+    const scalar c1 = (1 - 2*a_)/3;
+    const scalar muR = mu_*r;
+
+    cobasis::matrix Qp;
+    for (int d = 0; d < 3; ++d)
+    {
+        const scalar gd = g(d);
+        for (int k = 0; k < 3; ++k)
+        {
+            if (k != d)
+            {
+                Qp(k, d) = muR*g(k)*(c1*j1 + a_*(gd + g(k)));
+            }
+        }
+        const scalar beta = c1*j1*(gd - j1/3) + a_*(gd*gd - j2/3);
+        const scalar dj1 = -2*gd + 2.0/3.0*j1;
+        const scalar dj2 = -4*gd*gd + 4.0/3.0*j2;
+        const scalar dB =
+            c1*(dj1*(gd - j1/3) + j1*(-4.0/3.0*gd - dj1/3))
+          + a_*(-8.0/3.0*gd*gd - dj2/3);
+        Qp(d, d) = -muR*(dB - beta);
+    }
+    return Qp;
+}
+
+
 Foam::cobasis::matrix Foam::elasticModels::separable::dSComplexStep
 (
     const cobasis::matrix& A,
