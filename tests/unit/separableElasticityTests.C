@@ -606,6 +606,38 @@ TEST(separableElasticity, principalQeIsQeInTheEigenbasisOfG)
 }
 
 
+TEST(separableElasticity, addDivSIsThreeDerivatives)
+{
+    // The predictor's divergence of S: the shared-work version equals the
+    // base class's three calls of dS, column j of dS(A, dA/dx_j), to the
+    // last bit (the same expressions)
+    std::mt19937 gen(31);
+    std::uniform_real_distribution<scalar> u(-1, 1);
+    for (const scalar a : {-1.0, 0.0, 0.5})
+    {
+        const anyASeparable model(a);
+        for (int sample = 0; sample < 100; ++sample)
+        {
+            const matrix A(randomCobasis(gen, 2));
+            matrix dAdx[3];
+            for (int j = 0; j < 3; ++j)
+            {
+                for (int i = 0; i < 9; ++i) dAdx[j](i) = 100*u(gen);
+            }
+            vector d1(1e9, -2e9, 3e9), d2(d1), d3(d1);
+            model.addDivS(A, dAdx, d1);
+            model.elasticModel::addDivS(A, dAdx, d2);
+            for (int j = 0; j < 3; ++j)
+            {
+                d3 += model.dS(A, dAdx[j]).col(j);
+            }
+            EXPECT_EQ(d1, d2) << "a = " << a << ", A =\n" << A;
+            EXPECT_EQ(d1, d3) << "a = " << a << ", A =\n" << A;
+        }
+    }
+}
+
+
 TEST(separableElasticity, hyperbolicOnlyForAInRange)
 {
     // Isochoric strains, principal stretches in [1/3, 3], random n

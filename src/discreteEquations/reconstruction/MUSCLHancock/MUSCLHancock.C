@@ -687,10 +687,7 @@ void Foam::reconstructions::MUSCLHancock::update
             cobasis::vector divSigma(-sl.gP);
             if (ph.solid())
             {
-                for (int j = 0; j < 3; ++j)
-                {
-                    divSigma += ph.elastic().dS(Ac, sl.gA[j]).col(j);
-                }
+                ph.elastic().addDivS(Ac, sl.gA, divSigma);
             }
 
             sl.dtRho = -halfDt*(u.dot(sl.gRho) + rho[c]*divU);

@@ -42,6 +42,20 @@ Foam::cobasis::matrix Foam::elasticModel::dS
 }
 
 
+void Foam::elasticModel::addDivS
+(
+    const cobasis::matrix& A,
+    const cobasis::matrix dAdx[3],
+    cobasis::vector& divS
+) const
+{
+    for (int j = 0; j < 3; ++j)
+    {
+        divS += dS(A, dAdx[j]).col(j);
+    }
+}
+
+
 Foam::cobasis::matrix Foam::elasticModel::Qe
 (
     const cobasis::matrix& A,

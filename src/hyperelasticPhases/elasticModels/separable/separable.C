@@ -115,6 +115,42 @@ Foam::cobasis::matrix Foam::elasticModels::separable::dS
 }
 
 
+void Foam::elasticModels::separable::addDivS
+(
+    const cobasis::matrix& A,
+    const cobasis::matrix dAdx[3],
+    cobasis::vector& divS
+) const
+{
+    // dS above, term for term, with the parts that do not depend on dA
+    // evaluated once for the three directions
+    typedef cobasis::matrix M;
+    const M I = M::Identity();
+    const scalar r = A.determinant();
+    const M Ainv(A.inverse());
+    const scalar s = std::cbrt(1/(r*r));
+    const M G = A.transpose()*A;
+    const M g = s*G;
+    const scalar j1 = g.trace();
+    const scalar j2 = (g*g).trace();
+    const scalar c1 = (1 - 2*a_)/3;
+    const M B = (c1*j1)*(g - (j1/3)*I) + a_*(g*g - (j2/3)*I);
+    for (int j = 0; j < 3; ++j)
+    {
+        const M& dA = dAdx[j];
+        const scalar t = (Ainv*dA).trace();
+        const M dg = s*(dA.transpose()*A + A.transpose()*dA - (2.0/3.0*t)*G);
+        const M gdg = g*dg;
+        const scalar dj1 = dg.trace();
+        const scalar dj2 = 2*gdg.trace();
+        const M dB =
+            c1*(dj1*(g - (j1/3)*I) + j1*(dg - (dj1/3)*I))
+          + a_*(dg*g + gdg - (dj2/3)*I);
+        divS += ((-mu_)*((t*r)*B + r*dB)).col(j);
+    }
+}
+
+
 Foam::cobasis::matrix Foam::elasticModels::separable::Qe
 (
     const cobasis::matrix& A,
