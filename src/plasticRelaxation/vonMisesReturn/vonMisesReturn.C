@@ -24,10 +24,11 @@ Foam::scalar Foam::vonMisesReturn::f
     const scalar T
 )
 {
+    // g(s) in its eigenbasis is diag(exp(s h)), where S is diagonal too
     const cobasis::vector x((s*h).array().exp());
-    const cobasis::matrix S(elastic.S(x.asDiagonal().toDenseMatrix(), rhoByRho0));
+    const scalar magS = elastic.principalS(x, rhoByRho0).norm();
     const scalar dEps = dEpsP(q, h);
-    return sqrt(1.5)*S.norm() - law.sigmaY(epsP + dEps, rate(dEps, dt), T);
+    return sqrt(1.5)*magS - law.sigmaY(epsP + dEps, rate(dEps, dt), T);
 }
 
 

@@ -42,6 +42,16 @@ Foam::cobasis::matrix Foam::elasticModel::dS
 }
 
 
+Foam::cobasis::vector Foam::elasticModel::principalS
+(
+    const cobasis::vector& x,
+    const scalar rhoByRho0
+) const
+{
+    return S(x.asDiagonal().toDenseMatrix(), rhoByRho0).diagonal();
+}
+
+
 void Foam::elasticModel::addDivS
 (
     const cobasis::matrix& A,

@@ -79,6 +79,25 @@ Foam::cobasis::matrix Foam::elasticModels::separable::S
 }
 
 
+Foam::cobasis::vector Foam::elasticModels::separable::principalS
+(
+    const cobasis::vector& x,
+    const scalar rhoByRho0
+) const
+{
+    const cobasis::vector x2(x.cwiseProduct(x));
+    const scalar j1 = x.sum();
+    const scalar j2 = x2.sum();
+    const cobasis::vector one(cobasis::vector::Ones());
+    return
+        (-mu_*rhoByRho0)
+       *(
+            ((1 - 2*a_)/3*j1)*(x - (j1/3.0)*one)
+          + a_*(x2 - (j2/3.0)*one)
+        );
+}
+
+
 Foam::cobasis::matrix Foam::elasticModels::separable::dS
 (
     const cobasis::matrix& A,
