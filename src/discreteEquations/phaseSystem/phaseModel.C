@@ -69,7 +69,10 @@ void Foam::phaseModel::initCobasis(const bool readA)
 
     if (!law_.solid())
     {
+        // Carried unchanged from here on, boundary values included
+        // (correctBoundaryConditions leaves a fluid's A alone)
         A = tensor::I;
+        A_->correctBoundaryConditions();
         return;
     }
 
@@ -363,7 +366,13 @@ void Foam::phaseModel::correctBoundaryConditions()
     alpha_.correctBoundaryConditions();
     rho_.correctBoundaryConditions();
     p_->correctBoundaryConditions();
-    A_->correctBoundaryConditions();
+
+    // A fluid's cobasis is carried unchanged (its stress is -p I): its
+    // boundary values stay those of the start
+    if (solid())
+    {
+        A_->correctBoundaryConditions();
+    }
 }
 
 
@@ -372,7 +381,10 @@ void Foam::phaseModel::saveState()
     alphaSave_ = alpha_.primitiveField();
     rhoSave_ = rho_.primitiveField();
     pSave_ = p_->primitiveField();
-    ASave_ = A_->primitiveField();
+    if (solid())
+    {
+        ASave_ = A_->primitiveField();
+    }
     carriedSave_.setSize(carried_.size());
     forAll(carried_, i)
     {
@@ -386,7 +398,10 @@ void Foam::phaseModel::restoreState()
     alpha_.primitiveFieldRef() = alphaSave_;
     rho_.primitiveFieldRef() = rhoSave_;
     p_->primitiveFieldRef() = pSave_;
-    A_->primitiveFieldRef() = ASave_;
+    if (solid())
+    {
+        A_->primitiveFieldRef() = ASave_;
+    }
     forAll(carried_, i)
     {
         carried_[i].primitiveFieldRef() = carriedSave_[i];
