@@ -6,9 +6,11 @@ fvc::grad changed no result.
 
 tests/tools/gradientCheck builds a field with kinks and jumps on the case's
 mesh and compares the two gradients in every cell (maxDifference), and
-with every other cell masked over the masked cells (maxDifferenceMasked);
-limitedCells counts the cells where the limiter acted, so that the check
-covers the limiter. Meshes:
+with every other cell masked over the masked cells (maxDifferenceMasked;
+the others must get zero, maskedNonZero); the two-field pass (a phase's
+rho and p together) must give each field's single-pass gradient
+(maxDifferencePair); limitedCells counts the cells where the limiter
+acted, so that the check covers the limiter. Meshes:
   wedge      the taylorBar tutorial's axisymmetric wedge (0.4 mm: wedge,
              wall, slip and axis patches), serial;
   parallel   the same on 2 processes (processor patches);
@@ -46,7 +48,8 @@ def check_output(log):
     text = open(log).read()
     vals = {}
     for key in ("matches", "cells", "maxAbsGradient", "maxDifference",
-                "maxDifferenceMasked", "limitedCells"):
+                "maxDifferenceMasked", "maskedNonZero",
+                "maxDifferencePair", "limitedCells"):
         m = re.search(r"^%s (\S+)" % key, text, re.M)
         vals[key] = float(m.group(1)) if m else None
     return vals
@@ -84,13 +87,17 @@ def main():
         ok = (
             v["matches"] == 1 and v["maxDifference"] == 0
             and v["maxDifferenceMasked"] == 0 and v["limitedCells"] > 0
+            and v["maskedNonZero"] == 0 and v["maxDifferencePair"] == 0
         )
         checks.check(
             "gradientCheck_" + name, ok,
             "%d cells, %d limited: largest |fvc::grad - cellLimitedGauss| "
-            "%g (masked %g) on gradients up to %.3g (bound 0)"
+            "%g (masked %g, %d masked-out cells not zero; two-field pass "
+            "against single passes %g) on gradients up to %.3g (bound 0)"
             % (v["cells"] or -1, v["limitedCells"] or -1,
                v["maxDifference"], v["maxDifferenceMasked"],
+               int(v["maskedNonZero"] if v["maskedNonZero"] is not None else -1),
+               v["maxDifferencePair"],
                v["maxAbsGradient"] or 0))
 
     schemes = os.path.join(wedge, "system", "fvSchemes")

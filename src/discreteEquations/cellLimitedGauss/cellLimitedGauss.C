@@ -28,10 +28,11 @@ bool Foam::cellLimitedGauss::matches
 }
 
 
-void Foam::cellLimitedGauss::grad
+template<int N>
+void Foam::cellLimitedGauss::gradFields
 (
-    const volScalarField& vf,
-    vectorField& g,
+    const volScalarField* const vf[N],
+    vectorField* const g[N],
     const boolList* active
 )
 {
@@ -42,13 +43,17 @@ void Foam::cellLimitedGauss::grad
     const vectorField& C = mesh_.C().primitiveField();
     const vectorField& Cf = mesh_.Cf().primitiveField();
     const scalarField& V = mesh_.V();
-    const scalarField& v = vf.primitiveField();
     const label nCells = mesh_.nCells();
 
-    g.setSize(nCells);
-    g = Zero;
-    vMax_ = v;
-    vMin_ = v;
+    const scalarField* v[N];
+    for (int i = 0; i < N; ++i)
+    {
+        v[i] = &vf[i]->primitiveField();
+        g[i]->setSize(nCells);
+        *g[i] = Zero;
+        vMax_[i] = *v[i];
+        vMin_[i] = *v[i];
+    }
 
     // Only the cells that read their slope need it
     const auto skip = [active](const label c)
@@ -65,87 +70,109 @@ void Foam::cellLimitedGauss::grad
         {
             continue;
         }
-        const vector Sv
-        (
-            Sf[facei]*(w[facei]*(v[o] - v[n]) + v[n])
-        );
-        g[o] += Sv;
-        g[n] -= Sv;
+        for (int i = 0; i < N; ++i)
+        {
+            const scalarField& vi = *v[i];
+            vectorField& gi = *g[i];
+            scalarField& vMax = vMax_[i];
+            scalarField& vMin = vMin_[i];
+            const vector Sv
+            (
+                Sf[facei]*(w[facei]*(vi[o] - vi[n]) + vi[n])
+            );
+            gi[o] += Sv;
+            gi[n] -= Sv;
 
-        vMax_[o] = max(vMax_[o], v[n]);
-        vMin_[o] = min(vMin_[o], v[n]);
-        vMax_[n] = max(vMax_[n], v[o]);
-        vMin_[n] = min(vMin_[n], v[o]);
+            vMax[o] = max(vMax[o], vi[n]);
+            vMin[o] = min(vMin[o], vi[n]);
+            vMax[n] = max(vMax[n], vi[o]);
+            vMin[n] = min(vMin[n], vi[o]);
+        }
     }
 
     // Boundary faces (an empty patch has no faces here)
-    const volScalarField::Boundary& bv = vf.boundaryField();
     forAll(mesh_.boundary(), patchi)
     {
         const fvPatch& patch = mesh_.boundary()[patchi];
         const labelUList& fc = patch.faceCells();
         const vectorField& pSf = mesh_.Sf().boundaryField()[patchi];
-        const fvPatchScalarField& pv = bv[patchi];
 
-        if (pv.coupled())
+        for (int i = 0; i < N; ++i)
         {
-            const scalarField& pw = mesh_.weights().boundaryField()[patchi];
-            const scalarField vi(pv.patchInternalField());
-            const scalarField vn(pv.patchNeighbourField());
-            forAll(patch, i)
+            const fvPatchScalarField& pv = vf[i]->boundaryField()[patchi];
+            vectorField& gi = *g[i];
+            scalarField& vMax = vMax_[i];
+            scalarField& vMin = vMin_[i];
+            if (pv.coupled())
             {
-                g[fc[i]] += pSf[i]*(pw[i]*vi[i] + (1.0 - pw[i])*vn[i]);
-                vMax_[fc[i]] = max(vMax_[fc[i]], vn[i]);
-                vMin_[fc[i]] = min(vMin_[fc[i]], vn[i]);
+                const scalarField& pw =
+                    mesh_.weights().boundaryField()[patchi];
+                const scalarField vi(pv.patchInternalField());
+                const scalarField vn(pv.patchNeighbourField());
+                forAll(patch, j)
+                {
+                    gi[fc[j]] += pSf[j]*(pw[j]*vi[j] + (1.0 - pw[j])*vn[j]);
+                    vMax[fc[j]] = max(vMax[fc[j]], vn[j]);
+                    vMin[fc[j]] = min(vMin[fc[j]], vn[j]);
+                }
             }
-        }
-        else
-        {
-            forAll(patch, i)
+            else
             {
-                g[fc[i]] += pSf[i]*pv[i];
-                vMax_[fc[i]] = max(vMax_[fc[i]], pv[i]);
-                vMin_[fc[i]] = min(vMin_[fc[i]], pv[i]);
+                forAll(patch, j)
+                {
+                    gi[fc[j]] += pSf[j]*pv[j];
+                    vMax[fc[j]] = max(vMax[fc[j]], pv[j]);
+                    vMin[fc[j]] = min(vMin[fc[j]], pv[j]);
+                }
             }
         }
     }
 
     for (label c = 0; c < nCells; ++c)
     {
-        if (skip(c))
+        for (int i = 0; i < N; ++i)
         {
-            g[c] = Zero;
-            continue;
+            if (skip(c))
+            {
+                (*g[i])[c] = Zero;
+                continue;
+            }
+            (*g[i])[c] /= V[c];
+            vMax_[i][c] -= (*v[i])[c];
+            vMin_[i][c] -= (*v[i])[c];
         }
-        g[c] /= V[c];
-        vMax_[c] -= v[c];
-        vMin_[c] -= v[c];
     }
 
     // The Barth-Jespersen factors (minmod of r, as cellLimitedGrad)
-    limiter_.setSize(nCells);
-    limiter_ = 1;
+    for (int i = 0; i < N; ++i)
+    {
+        limiter_[i].setSize(nCells);
+        limiter_[i] = 1;
+    }
     const auto limitFace = [&](const label c, const vector& dx)
     {
         if (skip(c))
         {
             return;
         }
-        const scalar extrapolate = dx & g[c];
-        scalar r;
-        if (extrapolate > SMALL)
+        for (int i = 0; i < N; ++i)
         {
-            r = vMax_[c]/extrapolate;
+            const scalar extrapolate = dx & (*g[i])[c];
+            scalar r;
+            if (extrapolate > SMALL)
+            {
+                r = vMax_[i][c]/extrapolate;
+            }
+            else if (extrapolate < -SMALL)
+            {
+                r = vMin_[i][c]/extrapolate;
+            }
+            else
+            {
+                continue;
+            }
+            limiter_[i][c] = min(limiter_[i][c], min(r, scalar(1)));
         }
-        else if (extrapolate < -SMALL)
-        {
-            r = vMin_[c]/extrapolate;
-        }
-        else
-        {
-            return;
-        }
-        limiter_[c] = min(limiter_[c], min(r, scalar(1)));
     };
     forAll(nei, facei)
     {
@@ -157,16 +184,49 @@ void Foam::cellLimitedGauss::grad
         const fvPatch& patch = mesh_.boundary()[patchi];
         const labelUList& fc = patch.faceCells();
         const vectorField& pCf = mesh_.Cf().boundaryField()[patchi];
-        forAll(patch, i)
+        forAll(patch, j)
         {
-            limitFace(fc[i], pCf[i] - C[fc[i]]);
+            limitFace(fc[j], pCf[j] - C[fc[j]]);
         }
     }
 
-    for (label c = 0; c < nCells; ++c)
+    for (int i = 0; i < N; ++i)
     {
-        g[c] *= limiter_[c];
+        vectorField& gi = *g[i];
+        const scalarField& l = limiter_[i];
+        for (label c = 0; c < nCells; ++c)
+        {
+            gi[c] *= l[c];
+        }
     }
+}
+
+
+void Foam::cellLimitedGauss::grad
+(
+    const volScalarField& vf,
+    vectorField& g,
+    const boolList* active
+)
+{
+    const volScalarField* const f[1] = {&vf};
+    vectorField* const gs[1] = {&g};
+    gradFields<1>(f, gs, active);
+}
+
+
+void Foam::cellLimitedGauss::grad
+(
+    const volScalarField& vf1,
+    const volScalarField& vf2,
+    vectorField& g1,
+    vectorField& g2,
+    const boolList* active
+)
+{
+    const volScalarField* const f[2] = {&vf1, &vf2};
+    vectorField* const gs[2] = {&g1, &g2};
+    gradFields<2>(f, gs, active);
 }
 
 

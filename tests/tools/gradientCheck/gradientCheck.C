@@ -19,8 +19,12 @@ Description
         maxAbsGradient <g>  largest |fvc::grad(v)|
         maxDifference <d>   largest |fvc::grad(v) - cellLimitedGauss|
         maxDifferenceMasked <d>  the same with every other cell masked,
-                            over the masked cells (the others are not
-                            limited and are not compared)
+                            over the masked cells
+        maskedNonZero <n>   unmasked cells whose masked gradient is not
+                            zero (they must get zero)
+        maxDifferencePair <d>  the two-field pass (v and a second field
+                            w) against two masked single passes, over all
+                            cells
         limitedCells <n>    cells whose limited gradient differs from the
                             plain Gauss gradient (the limiter was active)
 
@@ -78,8 +82,28 @@ int main(int argc, char *argv[])
     vectorField gMasked;
     gauss.grad(v, gMasked, &active);
 
-    scalar maxG = 0, maxD = 0, maxDMasked = 0;
-    label nLimited = 0;
+    // A second field, and the two in one pass
+    volScalarField w
+    (
+        IOobject("w", runTime.timeName(), mesh),
+        mesh,
+        dimensionedScalar(dimless, Zero),
+        "zeroGradient"
+    );
+    forAll(w, c)
+    {
+        const point& x = mesh.C()[c];
+        w[c] =
+            std::cos(400*x.x() + 200*x.y()) + (x.y() > mid.y() ? 2 : 0)
+          + std::sin(900*x.z());
+    }
+    w.correctBoundaryConditions();
+    vectorField gwMasked, gPairV, gPairW;
+    gauss.grad(w, gwMasked, &active);
+    gauss.grad(v, w, gPairV, gPairW, &active);
+
+    scalar maxG = 0, maxD = 0, maxDMasked = 0, maxDPair = 0;
+    label nLimited = 0, nMaskedNonZero = 0;
     forAll(g, c)
     {
         maxG = max(maxG, mag(gFoam[c]));
@@ -88,6 +112,15 @@ int main(int argc, char *argv[])
         {
             maxDMasked = max(maxDMasked, mag(gFoam[c] - gMasked[c]));
         }
+        else if (gMasked[c] != vector::zero || gPairW[c] != vector::zero)
+        {
+            ++nMaskedNonZero;
+        }
+        maxDPair = max
+        (
+            maxDPair,
+            max(mag(gPairV[c] - gMasked[c]), mag(gPairW[c] - gwMasked[c]))
+        );
         if (gFoam[c] != gPlain[c])
         {
             ++nLimited;
@@ -96,13 +129,17 @@ int main(int argc, char *argv[])
     reduce(maxG, maxOp<scalar>());
     reduce(maxD, maxOp<scalar>());
     reduce(maxDMasked, maxOp<scalar>());
+    reduce(maxDPair, maxOp<scalar>());
     reduce(nLimited, sumOp<label>());
+    reduce(nMaskedNonZero, sumOp<label>());
 
     Info<< "matches " << cellLimitedGauss::matches(mesh, v.name()) << nl
         << "cells " << returnReduce(mesh.nCells(), sumOp<label>()) << nl
         << "maxAbsGradient " << maxG << nl
         << "maxDifference " << maxD << nl
         << "maxDifferenceMasked " << maxDMasked << nl
+        << "maskedNonZero " << nMaskedNonZero << nl
+        << "maxDifferencePair " << maxDPair << nl
         << "limitedCells " << nLimited << endl;
 
     return 0;

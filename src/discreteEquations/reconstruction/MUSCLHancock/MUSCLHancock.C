@@ -568,8 +568,23 @@ void Foam::reconstructions::MUSCLHancock::update
             gAlpha_.setSize(nCells);
             gAlpha_ = Zero;
         }
-        slopes(phases_.rho(k), gRho_, &slopeCells_);
-        slopes(phases_.p(k), gP_, &slopeCells_);
+        if
+        (
+            cellLimitedGauss::matches(mesh_, phases_.rho(k).name())
+         && cellLimitedGauss::matches(mesh_, phases_.p(k).name())
+        )
+        {
+            // Both in one pass over the faces (the same values)
+            gauss_.grad
+            (
+                phases_.rho(k), phases_.p(k), gRho_, gP_, &slopeCells_
+            );
+        }
+        else
+        {
+            slopes(phases_.rho(k), gRho_, &slopeCells_);
+            slopes(phases_.p(k), gP_, &slopeCells_);
+        }
         vectorField& gAlpha = gAlpha_;
         if (alphaCompression_ > 1 && nPhases_ > 1)
         {
