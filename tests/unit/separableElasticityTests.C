@@ -343,10 +343,10 @@ TEST(separableElasticity, stretchKeepsFingerTensorAndStress)
 
 TEST(separableElasticity, stretchClosedFormAtCoincidentEigenvalues)
 {
-    // cobasis::stretch is a closed form in G's eigenvalues: against the
-    // eigenvector construction V diag(sqrt(lambda)) V^T where eigenvalues
-    // coincide or nearly so (a rotation, a rotated isotropic compression,
-    // strains from 1e-12 to 1e-2 and a uniaxial state)
+    // cobasis::stretch (and rotation) is a closed form in G's eigenvalues:
+    // against the eigenvector construction V diag(sqrt(lambda)) V^T where
+    // eigenvalues coincide or nearly so (a rotation, a rotated isotropic
+    // compression, strains from 1e-12 to 1e-2 and a uniaxial state)
     std::mt19937 gen(13);
     std::uniform_real_distribution<double> U(-1, 1);
     scalar worst = 0;
@@ -377,6 +377,16 @@ TEST(separableElasticity, stretchClosedFormAtCoincidentEigenvalues)
         const scalar err = maxAbs(cobasis::stretch(A) - ref)/maxAbs(ref);
         worst = max(worst, err);
         EXPECT_LT(err, 1e-13) << "eps = " << eps << ", A =\n" << A;
+
+        // The rotation A U^-1 (U^-1 from Cayley-Hamilton)
+        const matrix R(cobasis::rotation(A));
+        const scalar errR = max
+        (
+            maxAbs(R.transpose()*R - matrix::Identity()),
+            maxAbs(R*ref - A)/maxAbs(A)
+        );
+        worst = max(worst, errR);
+        EXPECT_LT(errR, 1e-13) << "eps = " << eps << ", A =\n" << A;
     }
     std::printf
     (
