@@ -126,11 +126,9 @@ Foam::scalar Foam::hyperelasticPhase::a2Max
     // Along principal direction d the acoustic tensor is
     // c_h^2 e_d (x) e_d + Qe(e_d)/rho, diagonal in G's eigenbasis: its
     // eigenvalues need only G's eigenvalues (elasticModel::principalQe)
-    const Eigen::SelfAdjointEigenSolver<cobasis::matrix> eig
-    (
-        A.transpose()*A,
-        Eigen::EigenvaluesOnly
-    );
+    // (the closed-form eigenvalues: absolute error of order eps |G|)
+    Eigen::SelfAdjointEigenSolver<cobasis::matrix> eig;
+    eig.computeDirect(A.transpose()*A, Eigen::EigenvaluesOnly);
     const cobasis::matrix Qp
     (
         elastic_->principalQe(eig.eigenvalues(), A.determinant())
