@@ -16,7 +16,8 @@ Foam::cobasisTransport::cobasisTransport
     nPhases_(phases.size()),
     keepRotation_(false),
     L_(nPhases_),
-    advection_(nPhases_)
+    advection_(nPhases_),
+    Ahalf_(nPhases_)
 {
     enum class rotation { discard, keep };
     static const Enum<rotation> names
@@ -39,6 +40,7 @@ Foam::cobasisTransport::cobasisTransport
         {
             L_[k].resize(nCells);
             advection_[k].resize(nCells);
+            Ahalf_[k].resize(nCells);
         }
     }
 }
@@ -46,7 +48,7 @@ Foam::cobasisTransport::cobasisTransport
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::cobasisTransport::reset()
+void Foam::cobasisTransport::reset(const reconstruction& rec)
 {
     for (label k = 0; k < nPhases_; ++k)
     {
@@ -57,6 +59,17 @@ void Foam::cobasisTransport::reset()
         for (cobasis::matrix& a : advection_[k])
         {
             a.setZero();
+        }
+        if (!phases_.phase(k).solid())
+        {
+            continue;
+        }
+        // Once per cell, not at each of its faces
+        const tensorField& A = phases_.A(k).primitiveField();
+        std::vector<cobasis::matrix>& Ahalf = Ahalf_[k];
+        forAll(A, c)
+        {
+            Ahalf[c] = toEigen(A[c]) + rec.dtA(k, c);
         }
     }
 }
@@ -69,7 +82,6 @@ void Foam::cobasisTransport::addFace
     const std::vector<phaseSide>& own,
     const std::vector<phaseSide>& across,
     const demFaceAssembly& assembly,
-    const reconstruction& rec,
     const cobasis::matrix* Q
 )
 {
@@ -91,10 +103,7 @@ void Foam::cobasisTransport::addFace
         {
             continue;
         }
-        const cobasis::matrix Ac
-        (
-            toEigen(phases_.A(k)[c]) + rec.dtA(k, c)
-        );
+        const cobasis::matrix& Ac = Ahalf_[k][c];
         if (Q)
         {
             advection_[k][c] += flux*(up.A*Q->transpose() - Ac);

@@ -217,8 +217,8 @@ void Foam::demSolver::internalFaces()
         const cobasis::vector S(toEigen(Sf[facei]));
         assembly_.addToCell(o, 0, magSf_[facei]);
         assembly_.addToCell(nb, 1, magSf_[facei]);
-        cobasis_.addFace(o, S, faceO_, faceN_, assembly_, rec);
-        cobasis_.addFace(nb, -S, faceN_, faceO_, assembly_, rec);
+        cobasis_.addFace(o, S, faceO_, faceN_, assembly_);
+        cobasis_.addFace(nb, -S, faceN_, faceO_, assembly_);
 
         if (centred)
         {
@@ -339,14 +339,13 @@ void Foam::demSolver::boundaryFaces()
                     side, side, frames_[facei], fallback, true
                 );
                 assembly_.addToCell(celli, 0, magSf_[facei]);
-                cobasis_.addFace(celli, S, side, side, assembly_, rec);
+                cobasis_.addFace(celli, S, side, side, assembly_);
 
                 const label fb = wedgeImage_[i];
                 assembly_.addImageToCell(celli, magSf_[fb], wedgeQ_);
                 cobasis_.addFace
                 (
-                    celli, toEigen(Sf[fb]), side, side, assembly_, rec,
-                    &wedgeQ_
+                    celli, toEigen(Sf[fb]), side, side, assembly_, &wedgeQ_
                 );
                 continue;
             }
@@ -369,7 +368,7 @@ void Foam::demSolver::boundaryFaces()
             assembly_.addToCell(celli, cellIsLeft ? 0 : 1, magSf_[facei]);
             cobasis_.addFace
             (
-                celli, S, side, ghost_, assembly_, rec
+                celli, S, side, ghost_, assembly_
             );
         }
     }
@@ -490,7 +489,7 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
         nFallbackFaces_ > 0 ? &fallbackFaces_ : nullptr
     );
     assembly_.reset();
-    cobasis_.reset();
+    cobasis_.reset(reconstruction_());
 
     internalFaces();
     boundaryFaces();
