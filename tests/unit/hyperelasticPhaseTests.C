@@ -11,6 +11,7 @@
 
 #include <cstdio>
 #include <sstream>
+#include <vector>
 #include <iomanip>
 
 using namespace Foam;
@@ -40,6 +41,22 @@ std::string copperText(const scalar a)
 hyperelasticPhase copper(const scalar a)
 {
     return hyperelasticPhase("copper", dictFrom(copperText(a)));
+}
+
+//- Every elastic law of the library on copper's equation of state: the
+//  separable family (a = -1, 0, 1/2), metal and neo-Hookean, mu = muCu
+std::vector<std::string> everyElasticLaw()
+{
+    const std::string eos =
+        "equationOfState { type stiffenedGas; gamma 4.22; pInf 3.42e10; }";
+    return
+    {
+        copperText(-1), copperText(0), copperText(0.5),
+        "type solid;" + eos
+      + "elasticity { type metal; rho0 8900; mu 4.5e10; }",
+        "type solid;" + eos
+      + "elasticity { type neoHookean; rho0 8900; mu 4.5e10; }"
+    };
 }
 
 } // End anonymous namespace
@@ -178,18 +195,8 @@ TEST(hyperelasticPhase, a2MaxIsLargestEigenvalueOverPrincipalDirections)
     // eigenvalue of the acoustic tensor along each principal direction,
     // from the eigenproblem, for strained states of every elastic law
     std::mt19937 gen(43);
-    const std::string eos =
-        "equationOfState { type stiffenedGas; gamma 4.22; pInf 3.42e10; }";
-    const std::string laws[] =
-    {
-        copperText(-1), copperText(0), copperText(0.5),
-        "type solid;" + eos
-      + "elasticity { type metal; rho0 8900; mu 4.5e10; }",
-        "type solid;" + eos
-      + "elasticity { type neoHookean; rho0 8900; mu 4.5e10; }"
-    };
     scalar worst = 0;
-    for (const std::string& law : laws)
+    for (const std::string& law : everyElasticLaw())
     {
         const hyperelasticPhase phase("copper", dictFrom(law));
         for (int sample = 0; sample < 200; ++sample)
@@ -226,19 +233,9 @@ TEST(hyperelasticPhase, unstrainedCobasisHasNoShear)
     // with no elastic energy, without evaluating the law: the general path
     // must give the same to round-off for every law and density, and a
     // cobasis with the smallest shear must take the general path
-    const std::string eos =
-        "equationOfState { type stiffenedGas; gamma 4.22; pInf 3.42e10; }";
-    const scalar mu = 4.5e10;
-    const std::string laws[] =
-    {
-        copperText(-1), copperText(0), copperText(0.5),
-        "type solid;" + eos
-      + "elasticity { type metal; rho0 8900; mu 4.5e10; }",
-        "type solid;" + eos
-      + "elasticity { type neoHookean; rho0 8900; mu 4.5e10; }"
-    };
+    const scalar mu = muCu;
     scalar worstS = 0, worstE = 0;
-    for (const std::string& law : laws)
+    for (const std::string& law : everyElasticLaw())
     {
         const hyperelasticPhase phase("copper", dictFrom(law));
         for (const scalar s : {0.7, 0.93, 1.0, 1.04, 1.3})

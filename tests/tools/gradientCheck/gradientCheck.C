@@ -48,21 +48,43 @@ int main(int argc, char *argv[])
     const point mid(bb.midpoint());
     const scalar L = bb.mag();
 
-    volScalarField v
-    (
-        IOobject("v", runTime.timeName(), mesh),
-        mesh,
-        dimensionedScalar(dimless, Zero),
-        "zeroGradient"
-    );
-    forAll(v, c)
+    // A field of the function f of the cell centres, with the patch types
+    // a zeroGradient field takes
+    const auto cellField = [&](const word& name, const auto& f)
     {
-        const point& x = mesh.C()[c];
-        v[c] =
-            std::sin(300*x.x())*std::cos(500*x.y()) + std::sin(700*x.z())
-          + (x.x() > mid.x() ? 1 : 0) + mag(x.y() - mid.y())/L;
-    }
-    v.correctBoundaryConditions();
+        tmp<volScalarField> tvf
+        (
+            new volScalarField
+            (
+                IOobject(name, runTime.timeName(), mesh),
+                mesh,
+                dimensionedScalar(dimless, Zero),
+                "zeroGradient"
+            )
+        );
+        volScalarField& vf = tvf.ref();
+        forAll(vf, c)
+        {
+            vf[c] = f(mesh.C()[c]);
+        }
+        vf.correctBoundaryConditions();
+        return tvf;
+    };
+
+    const volScalarField v
+    (
+        cellField
+        (
+            "v",
+            [&](const point& x)
+            {
+                return
+                    std::sin(300*x.x())*std::cos(500*x.y())
+                  + std::sin(700*x.z())
+                  + (x.x() > mid.x() ? 1 : 0) + mag(x.y() - mid.y())/L;
+            }
+        )
+    );
 
     const vectorField gFoam(fvc::grad(v)().primitiveField());
     const vectorField gPlain(fv::gaussGrad<scalar>::gradf
@@ -83,21 +105,19 @@ int main(int argc, char *argv[])
     gauss.grad(v, gMasked, &active);
 
     // A second field, and the two in one pass
-    volScalarField w
+    const volScalarField w
     (
-        IOobject("w", runTime.timeName(), mesh),
-        mesh,
-        dimensionedScalar(dimless, Zero),
-        "zeroGradient"
+        cellField
+        (
+            "w",
+            [&](const point& x)
+            {
+                return
+                    std::cos(400*x.x() + 200*x.y())
+                  + (x.y() > mid.y() ? 2 : 0) + std::sin(900*x.z());
+            }
+        )
     );
-    forAll(w, c)
-    {
-        const point& x = mesh.C()[c];
-        w[c] =
-            std::cos(400*x.x() + 200*x.y()) + (x.y() > mid.y() ? 2 : 0)
-          + std::sin(900*x.z());
-    }
-    w.correctBoundaryConditions();
     vectorField gwMasked, gPairV, gPairW;
     gauss.grad(w, gwMasked, &active);
     gauss.grad(v, w, gPairV, gPairW, &active);

@@ -543,10 +543,10 @@ void Foam::reconstructions::MUSCLHancock::update
         alphaRange(alpha, minAlpha, maxAlpha);
 
         // The cells that take slopes of rho, p and A: not minor, not first
-        // order (the loop below zeroes the others)
-        // The cells that read the alpha slope: a phase below alphaMinor in
-        // the cell keeps its cell value at the faces and in the time-
-        // centred state, and takes no THINC profile
+        // order (the loop below zeroes the others). The cells that read
+        // the alpha slope: at or above alphaMinor in the cell, not first
+        // order (below, a phase keeps its cell value at the faces and in
+        // the time-centred state, and takes no THINC profile)
         for (label c = 0; c < nCells; ++c)
         {
             const bool first = firstOrderCell(c);
