@@ -122,12 +122,14 @@ Foam::cobasis::matrix Foam::cobasisTransport::update
     const label c,
     const scalar dt,
     const scalar V,
-    const cobasis::matrix& A,
-    const cobasis::matrix& Ahalf
+    const cobasis::matrix& A
 ) const
 {
     const scalar dtByV = dt/V;
-    cobasis::matrix Anew(A - dtByV*advection_[k][c] - dt*(Ahalf*L_[k][c])/V);
+    cobasis::matrix Anew
+    (
+        A - dtByV*advection_[k][c] - dt*(Ahalf_[k][c]*L_[k][c])/V
+    );
 
     // Stored without rotation (an inverted cobasis is left for the
     // relaxation's det(A) check)

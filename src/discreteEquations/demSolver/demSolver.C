@@ -454,11 +454,9 @@ void Foam::demSolver::newState(const scalar dt, conservedState& q) const
             }
             else if (solid)
             {
-                // Time-centred cobasis in the stretching term
-                q.A[k][c] = cobasis_.update
-                (
-                    k, c, dt, V[c], Ac, Ac + reconstruction_->dtA(k, c)
-                );
+                // (the time-centred cobasis in the stretching term is the
+                // one the face loop advected against)
+                q.A[k][c] = cobasis_.update(k, c, dt, V[c], Ac);
             }
             else
             {
