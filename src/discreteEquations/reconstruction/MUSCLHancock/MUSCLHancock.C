@@ -115,9 +115,22 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
         );
     }
 
+    solidSlopes_.resize(nPhases_);
+    if (thinc_.valid())
+    {
+        profiles_.resize(nPhases_);
+    }
     for (label k = 0; k < nPhases_; ++k)
     {
         slopes_[k].resize(mesh_.nCells());
+        if (phases.phase(k).solid())
+        {
+            solidSlopes_[k].resize(mesh_.nCells());
+        }
+        if (thinc_.valid())
+        {
+            profiles_[k].resize(mesh_.nCells());
+        }
     }
 }
 
@@ -330,7 +343,8 @@ void Foam::reconstructions::MUSCLHancock::setProfile
     const vector& g,
     const vector& U,
     const scalar halfDt,
-    cellSlopes& sl
+    cellSlopes& sl,
+    profile& pr
 ) const
 {
     const scalar aRange = aMax - aMin;
@@ -356,36 +370,36 @@ void Foam::reconstructions::MUSCLHancock::setProfile
     extentAlong(mesh_.cellPoints()[c], n, lo, hi);
 
     sl.sharp = true;
-    sl.nAlpha = toEigen(n);
-    sl.xLow = lo;
-    sl.h = hi - lo;
-    sl.xiShift = (U & n)*halfDt/sl.h;
+    pr.nAlpha = toEigen(n);
+    pr.xLow = lo;
+    pr.h = hi - lo;
+    pr.xiShift = (U & n)*halfDt/pr.h;
     if (thincFullRange_)
     {
         // The whole step from 0 to 1 (Xiao et al.'s profile): the cell
         // mean alone places the jump
-        sl.xiJ = thinc_->jump(min(max(alpha, 1e-4), 1 - 1e-4));
-        sl.aLow = 0;
-        sl.aRange = 1;
+        pr.xiJ = thinc_->jump(min(max(alpha, 1e-4), 1 - 1e-4));
+        pr.aLow = 0;
+        pr.aRange = 1;
     }
     else
     {
-        sl.xiJ = thinc_->jump(aBar);
-        sl.aLow = aMin;
-        sl.aRange = aRange;
+        pr.xiJ = thinc_->jump(aBar);
+        pr.aLow = aMin;
+        pr.aRange = aRange;
     }
 
     // The time-centred cell value: the mean of the profile moved by half
     // a step
     sl.dtAlpha =
-        sl.aLow + sl.aRange*thinc_->mean(-sl.xiShift, 1 - sl.xiShift, sl.xiJ)
+        pr.aLow + pr.aRange*thinc_->mean(-pr.xiShift, 1 - pr.xiShift, pr.xiJ)
       - alpha;
 }
 
 
 Foam::scalar Foam::reconstructions::MUSCLHancock::profileFaceAlpha
 (
-    const cellSlopes& sl,
+    const profile& pr,
     const label celli,
     const label facei,
     const vector& d
@@ -393,15 +407,15 @@ Foam::scalar Foam::reconstructions::MUSCLHancock::profileFaceAlpha
 {
     // The face's spread along n from its points, its centre from d (on a
     // wedge face d is the centre turned into the cell's plane)
-    const vector n(sl.nAlpha(0), sl.nAlpha(1), sl.nAlpha(2));
+    const vector n(pr.nAlpha(0), pr.nAlpha(1), pr.nAlpha(2));
     scalar lo, hi;
     extentAlong(mesh_.faces()[facei], n, lo, hi);
     const scalar xiC =
-        ((n & (mesh_.cellCentres()[celli] + d)) - sl.xLow)/sl.h - sl.xiShift;
-    const scalar halfW = 0.5*(hi - lo)/sl.h;
+        ((n & (mesh_.cellCentres()[celli] + d)) - pr.xLow)/pr.h - pr.xiShift;
+    const scalar halfW = 0.5*(hi - lo)/pr.h;
     return
-        sl.aLow
-      + sl.aRange*thinc_->mean(xiC - halfW, xiC + halfW, sl.xiJ);
+        pr.aLow
+      + pr.aRange*thinc_->mean(xiC - halfW, xiC + halfW, pr.xiJ);
 }
 
 
@@ -652,26 +666,21 @@ void Foam::reconstructions::MUSCLHancock::update
                 setProfile
                 (
                     c, alpha[c], minAlpha[c], maxAlpha[c], gAlpha[c], U[c],
-                    halfDt, sl
+                    halfDt, sl, profiles_[k][c]
                 );
             }
 
             if (sl.minor || first)
             {
+                // (a first-order cell's faces read the velocity slope,
+                // gradU_, and the zero slopes of the others)
                 sl.gRho.setZero();
                 sl.gP.setZero();
-                if (first)
-                {
-                    sl.gU = toEigen(gradU[c]);
-                }
-                else
-                {
-                    sl.gU.setZero();
-                }
                 if (ph.solid())
                 {
-                    // (a fluid's cobasis slopes are never read)
-                    for (int i = 0; i < 3; ++i) sl.gA[i].setZero();
+                    solidSlopes& so = solidSlopes_[k][c];
+                    for (int i = 0; i < 3; ++i) so.gA[i].setZero();
+                    so.dtA.setZero();
                 }
                 sl.dtRho = 0;
                 sl.dtP = 0;
@@ -680,29 +689,28 @@ void Foam::reconstructions::MUSCLHancock::update
                 {
                     sl.dtU = halfDt*toEigen((*acceleration)[c]);
                 }
-                sl.dtA.setZero();
                 continue;
             }
 
             sl.gRho = toEigen(gRho[c]);
             sl.gP = toEigen(gP[c]);
-            sl.gU = toEigen(gradU[c]);
             if (ph.solid())
             {
+                solidSlopes& so = solidSlopes_[k][c];
                 for (int i = 0; i < 3; ++i)
                 {
-                    sl.gA[i] = toEigen(dAdx_[i][c]);
+                    so.gA[i] = toEigen(dAdx_[i][c]);
                 }
             }
-            // Primitive equations, with L_ij = du_i/dx_j = gU(j, i)
-            const cobasis::matrix L(sl.gU.transpose());
+            // Primitive equations, with L_ij = du_i/dx_j = gradU(j, i)
+            const cobasis::matrix L(toEigen(gradU[c]).transpose());
             const double divU = L.trace();
             const cobasis::matrix Ac(toEigen(A[c]));
 
             cobasis::vector divSigma(-sl.gP);
             if (ph.solid())
             {
-                ph.elastic().addDivS(Ac, sl.gA, divSigma);
+                ph.elastic().addDivS(Ac, solidSlopes_[k][c].gA, divSigma);
             }
 
             sl.dtRho = -halfDt*(u.dot(sl.gRho) + rho[c]*divU);
@@ -716,20 +724,17 @@ void Foam::reconstructions::MUSCLHancock::update
             }
             if (ph.solid())
             {
-                sl.dtA =
+                solidSlopes& so = solidSlopes_[k][c];
+                so.dtA =
                     -halfDt
                    *(
-                        u(0)*sl.gA[0] + u(1)*sl.gA[1] + u(2)*sl.gA[2]
+                        u(0)*so.gA[0] + u(1)*so.gA[1] + u(2)*so.gA[2]
                       + Ac*L
                     );
                 if (relaxPredictor_)
                 {
-                    relaxPredicted(k, c, Ac, rho[c], p[c], halfDt, sl.dtA);
+                    relaxPredicted(k, c, Ac, rho[c], p[c], halfDt, so.dtA);
                 }
-            }
-            else
-            {
-                sl.dtA.setZero();
             }
         }
     }
@@ -789,7 +794,7 @@ void Foam::reconstructions::MUSCLHancock::faceState
         const cellSlopes& sl = slopes_[k][celli];
         const scalar af =
             sl.sharp
-          ? profileFaceAlpha(sl, celli, facei, d)
+          ? profileFaceAlpha(profiles_[k][celli], celli, facei, d)
           : ac + sl.gAlpha.dot(de) + sl.dtAlpha;
         alphaScratch_[k] =
             ac < phases_.alphaMinor()
@@ -829,13 +834,19 @@ void Foam::reconstructions::MUSCLHancock::faceState
         cellCarried(k, celli, sk);
         sk.rho = rhoc + sl.gRho.dot(de) + sl.dtRho;
         sk.p = pc + sl.gP.dot(de) + sl.dtP;
-        sk.U = toEigen(Uc) + sl.gU.transpose()*de + sl.dtU;
+        sk.U = toEigen(Uc) + toEigen(gradU_[celli]).transpose()*de + sl.dtU;
         // A fluid's cobasis is carried along unused (its stress is -p I)
-        sk.A =
-            ph.solid()
-          ? (Ac + de(0)*sl.gA[0] + de(1)*sl.gA[1] + de(2)*sl.gA[2] + sl.dtA)
-            .eval()
-          : Ac;
+        if (ph.solid())
+        {
+            const solidSlopes& so = solidSlopes_[k][celli];
+            sk.A =
+                Ac + de(0)*so.gA[0] + de(1)*so.gA[1] + de(2)*so.gA[2]
+              + so.dtA;
+        }
+        else
+        {
+            sk.A = Ac;
+        }
 
         if
         (
@@ -887,10 +898,13 @@ void Foam::reconstructions::MUSCLHancock::centreState
             sk.alpha = min(max(sk.alpha + sl.dtAlpha, 0.0), 1.0);
         }
 
+        const hyperelasticPhase& ph = phases_.phase(k);
         const double rho = sk.rho + sl.dtRho;
         const double p = sk.p + sl.dtP;
-        const cobasis::matrix A(sk.A + sl.dtA);
-        const hyperelasticPhase& ph = phases_.phase(k);
+        const cobasis::matrix A
+        (
+            ph.solid() ? (sk.A + solidSlopes_[k][celli].dtA).eval() : sk.A
+        );
         if
         (
             ph.eos().admissible(rho, p)
