@@ -8,14 +8,14 @@ Foam::cellStates::cellStates(const phaseSystem& phases)
 :
     phases_(phases),
     E_(phases.size()),
-    a_(phases.size()),
+    speeds_(phases.size()),
     sigma_(phases.size())
 {
     const label nCells = phases.mesh().nCells();
     for (label k = 0; k < phases.size(); ++k)
     {
         E_[k].resize(nCells);
-        a_[k].resize(nCells);
+        speeds_[k].resize(nCells);
         sigma_[k].resize(nCells);
     }
 }
@@ -51,11 +51,12 @@ void Foam::cellStates::update()
             // (a trace heavier than the cell's other phases keeps its own
             // energy, mechanicalRelaxation::relaxTraces, and may sit below
             // pMin: debris smeared into a vacuum)
-            a_[k][celli] = std::sqrt
+            speeds& sc = speeds_[k][celli];
+            sc.c2h = ph.eos().c2(rho[celli], p[celli]);
+            sc.a = std::sqrt
             (
                 alpha[celli] < aMinor
-              ? max(ph.eos().c2(rho[celli], p[celli]), scalar(0))
-              + 4.0/3.0*cT2
+              ? max(sc.c2h, scalar(0)) + 4.0/3.0*cT2
               : ph.a2Max(rho[celli], p[celli], Ac)
             );
         }

@@ -865,7 +865,7 @@ void Foam::reconstructions::MUSCLHancock::faceState
         // a_f^2 = c_h^2(face) + (a_cell^2 - c_h^2(cell)), >= a_cell^2/4
         const double ac2 = sqr(cells_.a(k, celli));
         const double a2 =
-            ph.eos().c2(sk.rho, sk.p) + ac2 - ph.eos().c2(rhoc, pc);
+            ph.eos().c2(sk.rho, sk.p) + ac2 - cells_.c2h(k, celli);
         sk.a = std::sqrt(max(a2, 0.25*ac2));
     }
     markMinor(s);
