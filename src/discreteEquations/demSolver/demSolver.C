@@ -325,7 +325,11 @@ void Foam::demSolver::boundaryFaces()
                 {
                     phaseSide& s = cellFace[k];
                     s.U = T*s.U;
-                    s.A = s.A*T.transpose();
+                    if (s.solid)
+                    {
+                        // (a fluid's cobasis is not read)
+                        s.A = s.A*T.transpose();
+                    }
                     s.sigma = T*s.sigma*T.transpose();
                 }
             }

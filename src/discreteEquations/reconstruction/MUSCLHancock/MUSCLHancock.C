@@ -830,14 +830,14 @@ void Foam::reconstructions::MUSCLHancock::faceState
         const hyperelasticPhase& ph = phases_.phase(k);
         const double rhoc = phases_.rho(k)[celli];
         const double pc = phases_.p(k)[celli];
-        const cobasis::matrix Ac(toEigen(phases_.A(k)[celli]));
         cellCarried(k, celli, sk);
         sk.rho = rhoc + sl.gRho.dot(de) + sl.dtRho;
         sk.p = pc + sl.gP.dot(de) + sl.dtP;
         sk.U = toEigen(Uc) + toEigen(gradU_[celli]).transpose()*de + sl.dtU;
-        // A fluid's cobasis is carried along unused (its stress is -p I)
+        cobasis::matrix Ac;
         if (ph.solid())
         {
+            Ac = toEigen(phases_.A(k)[celli]);
             const solidSlopes& so = solidSlopes_[k][celli];
             sk.A =
                 Ac + de(0)*so.gA[0] + de(1)*so.gA[1] + de(2)*so.gA[2]
@@ -845,7 +845,9 @@ void Foam::reconstructions::MUSCLHancock::faceState
         }
         else
         {
-            sk.A = Ac;
+            // A fluid's cobasis is the identity, carried along unused (its
+            // stress is -p I; phaseModel)
+            sk.A.setIdentity();
         }
 
         if
@@ -858,7 +860,10 @@ void Foam::reconstructions::MUSCLHancock::faceState
             sk.rho = rhoc;
             sk.p = pc;
             sk.U = toEigen(Uc);
-            sk.A = Ac;
+            if (ph.solid())
+            {
+                sk.A = Ac;
+            }
         }
         completeSide(k, sk);
 

@@ -83,7 +83,15 @@ void Foam::reconstruction::cellSide
     s.rho = phases_.rho(k)[celli];
     s.p = phases_.p(k)[celli];
     s.U = U;
-    s.A = toEigen(phases_.A(k)[celli]);
+    if (ph.solid())
+    {
+        s.A = toEigen(phases_.A(k)[celli]);
+    }
+    else
+    {
+        // A fluid's cobasis is the identity (phaseModel)
+        s.A.setIdentity();
+    }
     cellCarried(k, celli, s);
     s.sigma = cells_.sigma(k, celli);
     s.E =
