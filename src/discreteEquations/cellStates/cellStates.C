@@ -16,7 +16,10 @@ Foam::cellStates::cellStates(const phaseSystem& phases)
     {
         E_[k].resize(nCells);
         speeds_[k].resize(nCells);
-        sigma_[k].resize(nCells);
+        if (phases.phase(k).solid())
+        {
+            sigma_[k].resize(nCells);
+        }
     }
 }
 
@@ -37,12 +40,23 @@ void Foam::cellStates::update()
         const scalarField& alpha = phase.alpha().primitiveField();
         const scalar aMinor = phases_.alphaMinor();
         const scalar cT2 = ph.cT2();
+        const bool solid = ph.solid();
 
         for (label celli = 0; celli < nCells; ++celli)
         {
-            const cobasis::matrix Ac(toEigen(A[celli]));
+            // A fluid's stress is -p I (not stored), its cobasis the
+            // identity (phaseModel) and its wave speed c_h
+            cobasis::matrix Ac;
             double e;
-            ph.sigmaAndE(rho[celli], p[celli], Ac, sigma_[k][celli], e);
+            if (solid)
+            {
+                Ac = toEigen(A[celli]);
+                ph.sigmaAndE(rho[celli], p[celli], Ac, sigma_[k][celli], e);
+            }
+            else
+            {
+                e = ph.eos().e(rho[celli], p[celli]);
+            }
             E_[k][celli] = e + 0.5*magSqr(U[celli]);
 
             // The acoustic eigenproblem for the phases that set the time
@@ -57,7 +71,8 @@ void Foam::cellStates::update()
             (
                 alpha[celli] < aMinor
               ? max(sc.c2h, scalar(0)) + 4.0/3.0*cT2
-              : ph.a2Max(rho[celli], p[celli], Ac)
+              : solid ? ph.a2Max(rho[celli], p[celli], Ac)
+              : sc.c2h
             );
         }
     }

@@ -93,7 +93,14 @@ void Foam::reconstruction::cellSide
         s.A.setIdentity();
     }
     cellCarried(k, celli, s);
-    s.sigma = cells_.sigma(k, celli);
+    if (ph.solid())
+    {
+        s.sigma = cells_.sigma(k, celli);
+    }
+    else
+    {
+        s.sigma = -s.p*cobasis::matrix::Identity();
+    }
     s.E =
         cells_.E(k, celli)
       + 0.5*(U.squaredNorm() - magSqr(phases_.U()[celli]));
