@@ -239,10 +239,17 @@ void Foam::reconstructions::MUSCLHancock::cobasisSlopes
     const scalarField& w = mesh_.weights();
     const tensorField& Ai = A.primitiveField();
 
+    // Only the cells that take slopes (slopeCells_) are summed, divided and
+    // read: most cells of an impact hold a solid as a trace
+    const label nCells = mesh_.nCells();
     for (int i = 0; i < 3; ++i)
     {
-        dAdx_[i].resize(mesh_.nCells());
-        dAdx_[i] = Zero;
+        dAdx_[i].resize(nCells);
+        tensorField& g = dAdx_[i];
+        for (label c = 0; c < nCells; ++c)
+        {
+            if (slopeCells_[c]) g[c] = Zero;
+        }
     }
 
     // Adds S_i A_f to cell c's sum of direction i
@@ -268,10 +275,7 @@ void Foam::reconstructions::MUSCLHancock::cobasisSlopes
             w[facei]*(Ai[own[facei]] - Ai[nei[facei]]) + Ai[nei[facei]]
         );
         add(own[facei], Sf[facei], Af);
-        for (int i = 0; i < 3; ++i)
-        {
-            dAdx_[i][nei[facei]] -= Sf[facei][i]*Af;
-        }
+        add(nei[facei], -Sf[facei], Af);
     }
 
     forAll(mesh_.boundary(), patchi)
@@ -308,7 +312,7 @@ void Foam::reconstructions::MUSCLHancock::cobasisSlopes
     {
         forAll(V, c)
         {
-            dAdx_[i][c] /= V[c];
+            if (slopeCells_[c]) dAdx_[i][c] /= V[c];
         }
     }
 }
@@ -672,14 +676,21 @@ void Foam::reconstructions::MUSCLHancock::update
 
             if (sl.minor || first)
             {
-                // (a first-order cell's faces read the velocity slope,
-                // gradU_, and the zero slopes of the others)
+                // A first-order cell's faces read the velocity slope,
+                // gradU_, and the zero slopes of the others; a minor
+                // phase's face states are its cell state (faceState), so
+                // its cobasis slopes are left as they are (most cells of
+                // an impact hold a solid as a trace). The time-centred
+                // states read the zero increments
                 sl.gRho.setZero();
                 sl.gP.setZero();
                 if (ph.solid())
                 {
                     solidSlopes& so = solidSlopes_[k][c];
-                    for (int i = 0; i < 3; ++i) so.gA[i].setZero();
+                    if (first)
+                    {
+                        for (int i = 0; i < 3; ++i) so.gA[i].setZero();
+                    }
                     so.dtA.setZero();
                 }
                 sl.dtRho = 0;
