@@ -60,8 +60,11 @@ void Foam::cellLimiter::factors
     const Field<Type>& v = vf.primitiveField();
 
     // Range of the cell and its neighbours
-    Field<Type> vMax(v);
-    Field<Type> vMin(v);
+    Field<Type>* range = this->range(static_cast<const Type*>(nullptr));
+    Field<Type>& vMax = range[0];
+    Field<Type>& vMin = range[1];
+    vMax = v;
+    vMin = v;
     forAll(nei, facei)
     {
         const label o = own[facei];

@@ -116,7 +116,7 @@ void Foam::linearVelocityGradient::calculate
     }
 
     // Barth-Jespersen, component by component
-    vectorField limiter;
+    vectorField& limiter = limiter_;
     stencil_.factors
     (
         U,

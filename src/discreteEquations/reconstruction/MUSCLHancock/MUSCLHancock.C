@@ -545,9 +545,9 @@ void Foam::reconstructions::MUSCLHancock::update
     const tensorField& gradU = gradU_;
     const scalar halfDt = 0.5*dt;
 
-    scalarField minAlpha(nCells);
-    scalarField maxAlpha(nCells);
-    tensorField limiterA;
+    scalarField& minAlpha = minAlpha_;
+    scalarField& maxAlpha = maxAlpha_;
+    tensorField& limiterA = limiterA_;
 
     for (label k = 0; k < nPhases_; ++k)
     {
