@@ -67,13 +67,20 @@ void Foam::cellStates::update()
             // pMin: debris smeared into a vacuum)
             speeds& sc = speeds_[k][celli];
             sc.c2h = ph.eos().c2(rho[celli], p[celli]);
-            sc.a = std::sqrt
-            (
-                alpha[celli] < aMinor
-              ? max(sc.c2h, scalar(0)) + 4.0/3.0*cT2
-              : solid ? ph.a2Max(rho[celli], p[celli], Ac)
-              : sc.c2h
-            );
+            scalar a2;
+            if (alpha[celli] < aMinor)
+            {
+                a2 = max(sc.c2h, scalar(0)) + 4.0/3.0*cT2;
+            }
+            else if (solid)
+            {
+                a2 = ph.a2Max(rho[celli], p[celli], Ac);
+            }
+            else
+            {
+                a2 = sc.c2h;
+            }
+            sc.a = std::sqrt(a2);
         }
     }
 }
