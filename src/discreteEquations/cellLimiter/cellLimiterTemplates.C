@@ -60,9 +60,9 @@ void Foam::cellLimiter::factors
     const Field<Type>& v = vf.primitiveField();
 
     // Range of the cell and its neighbours
-    Field<Type>* range = this->range(static_cast<const Type*>(nullptr));
-    Field<Type>& vMax = range[0];
-    Field<Type>& vMin = range[1];
+    Field<Type>* scratch = range(static_cast<const Type*>(nullptr));
+    Field<Type>& vMax = scratch[0];
+    Field<Type>& vMin = scratch[1];
     vMax = v;
     vMin = v;
     forAll(nei, facei)
