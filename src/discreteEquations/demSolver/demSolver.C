@@ -20,6 +20,9 @@ Foam::demSolver::demSolver
     nPhases_(phases.size()),
     magSf_(mag(mesh_.faceAreas())),
     frames_(mesh_.nFaces()),
+    ownerOffset_(mesh_.nInternalFaces()),
+    neighbourOffset_(mesh_.nInternalFaces()),
+    boundaryOffset_(mesh_.nFaces() - mesh_.nInternalFaces()),
     cells_(phases),
     timeStep_(phases, magSf_),
     reconstruction_(reconstruction::New(phases, cells_, schemeDict)),
@@ -61,6 +64,7 @@ Foam::demSolver::demSolver
             faceFrame::rotation(toEigen(Sf[facei]/magSf_[facei]));
     }
 
+    setOffsets();
     pairWedgeFaces(schemeDict);
 
     Info<< "Discrete equations: Riemann solver " << assembly_.riemann().type()
@@ -72,6 +76,44 @@ Foam::demSolver::demSolver
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::demSolver::setOffsets()
+{
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& Cf = mesh_.faceCentres();
+    const vectorField& C = mesh_.cellCentres();
+
+    forAll(nei, facei)
+    {
+        ownerOffset_[facei] = Cf[facei] - C[own[facei]];
+        neighbourOffset_[facei] = Cf[facei] - C[nei[facei]];
+    }
+
+    const boundaryKinds& kinds = phases_.boundary();
+    const label nInternal = mesh_.nInternalFaces();
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh_.boundary()[patchi];
+        const labelUList& fc = patch.faceCells();
+        tensor Tinv(tensor::I);
+        const bool wedge = (kinds[patchi] == boundaryKinds::kind::wedge);
+        if (wedge)
+        {
+            Tinv =
+                refCast<const wedgePolyPatch>(patch.patch()).faceT().T();
+        }
+        forAll(fc, i)
+        {
+            const label facei = patch.start() + i;
+            boundaryOffset_[facei - nInternal] =
+                wedge
+              ? vector((Tinv & Cf[facei]) - C[fc[i]])
+              : vector(Cf[facei] - C[fc[i]]);
+        }
+    }
+}
+
 
 void Foam::demSolver::pairWedgeFaces(const dictionary& schemeDict)
 {
@@ -188,8 +230,6 @@ void Foam::demSolver::internalFaces()
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
     const vectorField& Sf = mesh_.faceAreas();
-    const vectorField& Cf = mesh_.faceCentres();
-    const vectorField& C = mesh_.cellCentres();
     const reconstruction& rec = reconstruction_();
     const bool centred = rec.timeCentred();
 
@@ -208,8 +248,8 @@ void Foam::demSolver::internalFaces()
         }
         else
         {
-            rec.faceState(o, facei, Cf[facei] - C[o], faceO_);
-            rec.faceState(nb, facei, Cf[facei] - C[nb], faceN_);
+            rec.faceState(o, facei, ownerOffset_[facei], faceO_);
+            rec.faceState(nb, facei, neighbourOffset_[facei], faceN_);
         }
 
         assembly_.solveFace(faceO_, faceN_, frames_[facei], fallback);
@@ -233,8 +273,7 @@ void Foam::demSolver::internalFaces()
 void Foam::demSolver::boundaryFaces()
 {
     const vectorField& Sf = mesh_.faceAreas();
-    const vectorField& Cf = mesh_.faceCentres();
-    const vectorField& C = mesh_.cellCentres();
+    const label nInternal = mesh_.nInternalFaces();
     const reconstruction& rec = reconstruction_();
     const bool centred = rec.timeCentred();
     const boundaryKinds& kinds = phases_.boundary();
@@ -261,16 +300,16 @@ void Foam::demSolver::boundaryFaces()
         const bool cellIsLeft = !coupled || kinds.coupledLeft(patchi);
 
         // Wedge faces: reconstruct at the image of the face centroid in
-        // the cell's plane, then rotate into the face plane by half the
-        // wedge angle: both sides take that state (section 7)
+        // the cell's plane (boundaryOffset_), then rotate into the face
+        // plane by half the wedge angle: both sides take that state
+        // (section 7)
         cobasis::matrix T(cobasis::matrix::Identity());
-        tensor Tinv(tensor::I);
         if (wedge)
         {
-            const wedgePolyPatch& wp =
-                refCast<const wedgePolyPatch>(patch.patch());
-            T = toEigen(wp.faceT());
-            Tinv = wp.faceT().T();
+            T = toEigen
+            (
+                refCast<const wedgePolyPatch>(patch.patch()).faceT()
+            );
         }
 
         forAll(fc, i)
@@ -287,13 +326,11 @@ void Foam::demSolver::boundaryFaces()
             }
             else if (!coupled)
             {
-                const vector d
+                rec.faceState
                 (
-                    wedge
-                  ? vector((Tinv & Cf[facei]) - C[celli])
-                  : vector(Cf[facei] - C[celli])
+                    celli, facei, boundaryOffset_[facei - nInternal],
+                    cellFace
                 );
-                rec.faceState(celli, facei, d, cellFace);
             }
             // (a wedge face is never coupled: its rotation below acts on
             // cellFace)
