@@ -43,6 +43,9 @@ directories holds a NaN.
                   THINCCoeffs { range bogus; } with THINC
     unknownPressureRelaxation
                   air with pressureRelaxation adiabatic (names the phase)
+    massFractionTrace
+                  massFractionTrace 2 in phaseProperties (a mass fraction
+                  is below 1)
 The valid base case must run to its end time (control).
 
 Unphysical runs (must stop during the run with a FatalError whose message
@@ -239,6 +242,11 @@ BAD_INPUT = [
                     " alphaCompression 2;"),
      [r"alphaCompression 2", r"THINC"],
      "THINC with alphaCompression 2"),
+    ("massFractionTrace",
+     lambda c: edit(c, PP, "phases (copper air);",
+                    "phases (copper air);\nmassFractionTrace 2;"),
+     [r"massFractionTrace \(2\)", r"< 1"],
+     "massFractionTrace 2"),
 ]
 
 

@@ -107,6 +107,10 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
     (
         dict_.getOrDefault<scalar>("massFractionMinor", 1e-6)
     ),
+    massFractionTrace_
+    (
+        dict_.getOrDefault<scalar>("massFractionTrace", massFractionMinor_)
+    ),
     pVacuum_(dict_.getOrDefault<scalar>("pVacuum", 1)),
     U_
     (
@@ -194,6 +198,18 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
             << "Need 0 < alphaMin (" << alphaMin_ << ") < alphaTrace ("
             << alphaTrace_ << ") <= alphaMinor (" << alphaMinor_
             << ") < 0.5" << exit(FatalIOError);
+    }
+
+    if
+    (
+        !(massFractionMinor_ >= 0 && massFractionMinor_ < 1)
+     || !(massFractionTrace_ >= 0 && massFractionTrace_ < 1)
+    )
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Need 0 <= massFractionMinor (" << massFractionMinor_
+            << ") < 1 and 0 <= massFractionTrace (" << massFractionTrace_
+            << ") < 1" << exit(FatalIOError);
     }
 
     checkFieldNames({"alpha.", "rho.", "A.", "p."});

@@ -479,7 +479,7 @@ Foam::scalar Foam::mechanicalRelaxation::collectMasses
     }
 
     // A fluid on a reference isentrope holding less than
-    // massFractionMinor of the cell's mass is a trace too, whatever its
+    // massFractionTrace of the cell's mass is a trace too, whatever its
     // volume: air inside a metal (numerical diffusion leaves such tails)
     // would otherwise take part in the pressure relaxation and cavitate
     // under the metal's tensile release waves, a gas holding no tension,
@@ -492,7 +492,7 @@ Foam::scalar Foam::mechanicalRelaxation::collectMasses
         if
         (
             phases_.referenceIsentrope(k).first() > 0
-         && m_[k] < phases_.massFractionMinor()*mass
+         && m_[k] < phases_.massFractionTrace()*mass
         )
         {
             trace_[k] = true;
