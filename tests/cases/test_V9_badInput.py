@@ -46,6 +46,8 @@ directories holds a NaN.
     massFractionTrace
                   massFractionTrace 2 in phaseProperties (a mass fraction
                   is below 1)
+    gasTraceRatio gasTraceRatio -1 in phaseProperties (a ratio of volumes
+                  is not negative)
 The valid base case must run to its end time (control).
 
 Unphysical runs (must stop during the run with a FatalError whose message
@@ -247,6 +249,11 @@ BAD_INPUT = [
                     "phases (copper air);\nmassFractionTrace 2;"),
      [r"massFractionTrace \(2\)", r"< 1"],
      "massFractionTrace 2"),
+    ("gasTraceRatio",
+     lambda c: edit(c, PP, "phases (copper air);",
+                    "phases (copper air);\ngasTraceRatio -1;"),
+     [r"gasTraceRatio >= 0, not -1"],
+     "gasTraceRatio -1"),
 ]
 
 

@@ -111,6 +111,7 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
     (
         dict_.getOrDefault<scalar>("massFractionTrace", massFractionMinor_)
     ),
+    gasTraceRatio_(dict_.getOrDefault<scalar>("gasTraceRatio", 1)),
     pVacuum_(dict_.getOrDefault<scalar>("pVacuum", 1)),
     U_
     (
@@ -210,6 +211,13 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
             << "Need 0 <= massFractionMinor (" << massFractionMinor_
             << ") < 1 and 0 <= massFractionTrace (" << massFractionTrace_
             << ") < 1" << exit(FatalIOError);
+    }
+
+    if (!(gasTraceRatio_ >= 0 && std::isfinite(gasTraceRatio_)))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Need a finite gasTraceRatio >= 0, not " << gasTraceRatio_
+            << exit(FatalIOError);
     }
 
     checkFieldNames({"alpha.", "rho.", "A.", "p."});
