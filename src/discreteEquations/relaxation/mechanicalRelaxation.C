@@ -496,13 +496,18 @@ Foam::scalar Foam::mechanicalRelaxation::collectMasses
     // the gas's pressure. Every mixed cell of a metal's free surface would
     // then carry that wrong condition; at the lip of a Taylor bar it makes
     // the mushroom 1.7 % wider than the converged Lagrangian result, at
-    // every mesh (docs/validation.md W1)
+    // every mesh (docs/validation.md W1). The solid must also outweigh the
+    // gas: a solid expanded far below its density (stiffened-gas copper
+    // debris at a few kg/m^3 behind a 4 km/s impact) is no free surface,
+    // and a trace heavier than every active phase is reset without a payer
     scalar alphaSolid = 0;
+    scalar mSolid = 0;
     for (label k = 0; k < nPhases_; ++k)
     {
         if (phases_.phase(k).solid() && alpha_[k] > alphaSolid)
         {
             alphaSolid = alpha_[k];
+            mSolid = m_[k];
         }
     }
     const scalar alphaGasTrace = phases_.gasTraceRatio()*alphaSolid;
@@ -514,7 +519,7 @@ Foam::scalar Foam::mechanicalRelaxation::collectMasses
             phases_.referenceIsentrope(k).first() > 0
          && (
                 m_[k] < phases_.massFractionTrace()*mass
-             || alpha_[k] < alphaGasTrace
+             || (alpha_[k] < alphaGasTrace && m_[k] < mSolid)
             )
         )
         {
