@@ -12,11 +12,11 @@ Runs: the taylorBar tutorial (the W1 bar, stiffened-gas copper, THINC) on
 its coarse 0.4 mm mesh (the bar's ends on cell faces) to its end, 80 us,
 the state W1 decides, at maxCo 0.2 and 0.8, with predictorRelaxation on and
 off. (Until session 23 the runs stopped at 40 us. With the gas in a solid's
-free-surface cells a trace of the relaxation (gasTraceRatio, numerics 9.2,
-session 24) the length at 40 us moved by 0.024 mm with the return and
-0.058 mm without: the error the return removes had not grown yet, and the
-ratio measured the diffuse ends' own time-step sensitivity, 6 % of a cell.
-At 80 us: 0.026 against 0.487 mm.)
+free-surface cells a trace of the relaxation (gasTraceRatio 1, numerics
+9.2, session 24, not the default) the length at 40 us moved by 0.024 mm
+with the return and 0.058 mm without: the error the return removes had not
+grown yet, and the ratio measured the diffuse ends' own time-step
+sensitivity, 6 % of a cell. At 80 us: 0.026 against 0.487 mm.)
 
 Checks
   predictorRelaxation_timeStepError  from maxCo 0.2 to 0.8, the bar's
@@ -24,9 +24,9 @@ Checks
                      the return (or 2 % of a cell), and its mushroom
                      radius by at most 1/2 of it (the radius, read at the
                      rim, also moves with THINC's profile over the step;
-                     at 80 us on this mesh: length 0.026 against 0.487 mm,
-                     radius 0.046 against 0.477 mm; before gasTraceRatio
-                     0.022 against 0.533, 0.196 against 0.711)
+                     at 80 us on this mesh: length 0.022 against 0.533 mm,
+                     radius 0.196 against 0.711 mm; with gasTraceRatio 1
+                     0.026 against 0.487, 0.046 against 0.477)
   predictorRelaxation_sameOnElastic  a run whose copper never yields
                      (sigmaY raised to 1e12 Pa, 10 us) is the same with
                      and without: the return leaves a state within the
