@@ -502,23 +502,30 @@ Foam::scalar Foam::mechanicalRelaxation::collectMasses
     // (stiffened-gas copper at 1-4 % of its density in the wake of the
     // 4 km/s bar, where the rule left the air around it heated to 1e7 Pa
     // at 0.2 kg/m^3 and the time step halved)
-    label kSolid = -1;
-    for (label k = 0; k < nPhases_; ++k)
+    scalar alphaGasTrace = 0;
+    if (phases_.gasTraceRatio() > 0)
     {
+        label kSolid = -1;
+        for (label k = 0; k < nPhases_; ++k)
+        {
+            if
+            (
+                phases_.phase(k).solid()
+             && (kSolid < 0 || alpha_[k] > alpha_[kSolid])
+            )
+            {
+                kSolid = k;
+            }
+        }
         if
         (
-            phases_.phase(k).solid()
-         && (kSolid < 0 || alpha_[k] > alpha_[kSolid])
+            kSolid >= 0
+         && m_[kSolid] > 0.5*phases_.phase(kSolid).rho0()*alpha_[kSolid]
         )
         {
-            kSolid = k;
+            alphaGasTrace = phases_.gasTraceRatio()*alpha_[kSolid];
         }
     }
-    const scalar alphaGasTrace =
-        kSolid >= 0
-     && m_[kSolid] > 0.5*phases_.phase(kSolid).rho0()*alpha_[kSolid]
-      ? phases_.gasTraceRatio()*alpha_[kSolid]
-      : 0;
 
     for (label k = 0; k < nPhases_; ++k)
     {
