@@ -111,7 +111,7 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
     (
         dict_.getOrDefault<scalar>("massFractionTrace", massFractionMinor_)
     ),
-    gasTraceRatio_(dict_.getOrDefault<scalar>("gasTraceRatio", 0)),
+    gasTraceRatio_(dict_.getOrDefault<scalar>("gasTraceRatio", 1)),
     pVacuum_(dict_.getOrDefault<scalar>("pVacuum", 1)),
     U_
     (
