@@ -167,6 +167,21 @@ def totals(s, phases, V):
     return out
 
 
+def box_residuals(case):
+    """The closed box's conservation from t = 0 to its latest time:
+    (phases, mesh, latest time name, largest relative change of a phase's
+    mass, relative change of the total energy)"""
+    phases = read_phases(case)
+    mesh = mg.read_polymesh(case)
+    tEnd = fc.latest_time(case)
+    T0 = totals(state(case, "0", phases, mesh.nCells), phases, mesh.V)
+    T1 = totals(state(case, tEnd, phases, mesh.nCells), phases, mesh.V)
+    worst = max(abs(T1["mass"][n] - T0["mass"][n])/T0["mass"][n]
+                for n, _ in phases)
+    dE = abs(T1["energy"] - T0["energy"])/abs(T0["energy"])
+    return phases, mesh, tEnd, worst, dE
+
+
 def log_steps(log):
     """Number of steps and the set of time-step sizes in a solver log."""
     dts, courant = [], []

@@ -39,7 +39,6 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
 import foamcase as fc                         # noqa: E402
 from checks import Checks                     # noqa: E402
-import meshGeometry as mg                     # noqa: E402
 sys.path.insert(0, HERE)
 import test_V6_conservation as v6             # noqa: E402
 
@@ -168,15 +167,7 @@ def main():
     except fc.FoamError as e:
         checks.fail("gasTraceRatio_conservation_run", e.summary)
         checks.exit()
-    phases = v6.read_phases(box)
-    mesh = mg.read_polymesh(box)
-    tEnd = fc.latest_time(box)
-    s0 = v6.state(box, "0", phases, mesh.nCells)
-    s1 = v6.state(box, tEnd, phases, mesh.nCells)
-    T0, T1 = v6.totals(s0, phases, mesh.V), v6.totals(s1, phases, mesh.V)
-    worst = max(abs(T1["mass"][n] - T0["mass"][n])/T0["mass"][n]
-                for n, _ in phases)
-    dE = abs(T1["energy"] - T0["energy"])/abs(T0["energy"])
+    phases, mesh, tEnd, worst, dE = v6.box_residuals(box)
     nRule = rule_cells(box, tEnd, phases, mesh.nCells)
     checks.check("gasTraceRatio_conservation",
                  nRule > 0 and worst <= CONSERVATION_TOL
