@@ -38,6 +38,13 @@ REF_HISTORY = os.path.join(ROOT, "validation", "taylorBar", "reference",
                            "sierra-ct-h0.19-history.csv")
 REF_LABEL = "FE (Sierra/SM, h = 0.19 mm)"
 W4_TOL = 0.20         # Taylor's apparent yield within 20 % of sigma_Y
+# The mushroom radius compared with the FE: rodProfile's faceRadius, the
+# outline extended from the first two cell rows to the impact face, where
+# the FE reads its face nodes (docs/validation.md W1). maxRadius, the
+# largest radius read at the rows' cell centres (z = h/2 for the first
+# row), is shown beside it; it is first-order short where the foot slopes.
+FACE_RADIUS = "faceRadius"
+ROW_RADIUS = "maxRadius"
 
 
 def band_error(value, band):
@@ -180,6 +187,11 @@ def read_table(case, phase="copper"):
     path = os.path.join(case, "postProcessing", "rodProfile", phase + ".csv")
     with open(path) as f:
         rows = list(csv.DictReader(f))
+    if FACE_RADIUS not in rows[0]:
+        raise RuntimeError("%s has no %s column: measured by an older "
+                           "rodProfile; run rodProfile -phase %s -R0 %g "
+                           "-withZero in %s again"
+                           % (path, FACE_RADIUS, phase, R0, case))
     return {k: [float(r[k]) for r in rows] for k in rows[0]}
 
 
@@ -237,15 +249,15 @@ def interpolate(ts, ys, t):
 
 
 def history_comparison(tab, ref, times_us=(5, 10, 20, 30, 40, 50, 60, 70,
-                                           80)):
+                                           80), radius=FACE_RADIUS):
     """Rows (t [us], L, L_ref, R, R_ref) [m] at the given times, the run's
-    table and the reference each interpolated linearly; times outside
-    either record are left out."""
+    table (its radius column) and the reference each interpolated linearly;
+    times outside either record are left out."""
     rows = []
     for tu in times_us:
         t = tu * 1e-6
         L = interpolate(tab["t"], tab["length"], t)
-        R = interpolate(tab["t"], tab["maxRadius"], t)
+        R = interpolate(tab["t"], tab[radius], t)
         Lr = interpolate(ref["t"], ref["length"], t)
         Rr = interpolate(ref["t"], ref["radius"], t)
         if None not in (L, R, Lr, Rr):
@@ -254,9 +266,10 @@ def history_comparison(tab, ref, times_us=(5, 10, 20, 30, 40, 50, 60, 70,
 
 
 def plot_histories(runs, png, title, measured=None, per_rod=1.0,
-                   reference=None):
-    """L(t) and R(t) of several runs [(label, table)] against the band (and
-    a reference history dict t, radius, length when given)."""
+                   reference=None, radius=FACE_RADIUS):
+    """L(t) and R(t) (the tables' radius column) of several runs
+    [(label, table)] against the band (and a reference history dict t,
+    radius, length when given)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -264,7 +277,7 @@ def plot_histories(runs, png, title, measured=None, per_rod=1.0,
     for label, tab in runs:
         t = [x * 1e6 for x in tab["t"]]
         ax[0].plot(t, [x * 1e3 / per_rod for x in tab["length"]], label=label)
-        ax[1].plot(t, [x * 1e3 for x in tab["maxRadius"]], label=label)
+        ax[1].plot(t, [x * 1e3 for x in tab[radius]], label=label)
     for a, band, name in ((ax[0], L_BAND, "length"),
                           (ax[1], R_BAND, "radius")):
         a.axhspan(band[0] * 1e3, band[1] * 1e3, color="0.8",
@@ -285,7 +298,8 @@ def plot_histories(runs, png, title, measured=None, per_rod=1.0,
         ax[1].plot([m[0] * 1e6 for m in measured],
                    [m[2] * 0.5e3 for m in measured], "ko", label="measured")
     ax[0].set_title("rod length" + (" (per rod)" if per_rod != 1 else ""))
-    ax[1].set_title("mushroom radius")
+    ax[1].set_title("mushroom radius" + (" at the impact face"
+                                         if radius == FACE_RADIUS else ""))
     ax[0].legend(fontsize=8)
     fig.suptitle(title)
     fig.tight_layout()

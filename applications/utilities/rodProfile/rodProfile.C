@@ -9,9 +9,14 @@ Description
     selected time of an impactFoam case, and the energy budget:
 
       postProcessing/rodProfile/<phase>.csv, one row per time:
-        t, length, maxRadius, undeformedLength, zMin, axialVelocity,
-        kinetic, elastic, plasticWork, internal, total  (energies in J;
-        on a wedge mesh, of the full body of revolution)
+        t, length, maxRadius, faceRadius, undeformedLength, zMin,
+        axialVelocity, kinetic, elastic, plasticWork, internal, total
+        (energies in J; on a wedge mesh, of the full body of revolution)
+      maxRadius is the largest radius of the slices, read at the slices'
+      cell centres; faceRadius the radius at the impact face (the body's
+      lowest end), where a Lagrangian code reads its face nodes: the
+      outline of the first two slices that hold the body, extended
+      linearly from their centres to the face (docs/validation.md W1).
       zMin is the lowest axial position of the body along the axis row
       (alpha integrated from the first slice holding it), axialVelocity
       the body's mass-averaged velocity along the axis.
@@ -117,8 +122,8 @@ int main(int argc, char *argv[])
     mkDir(outDir);
     OFstream table(outDir/(phaseName + ".csv"));
     table.precision(12);
-    table<< "t,length,maxRadius,undeformedLength,zMin,axialVelocity,"
-         << "kinetic,elastic,plasticWork,internal,total" << nl;
+    table<< "t,length,maxRadius,faceRadius,undeformedLength,zMin,"
+         << "axialVelocity,kinetic,elastic,plasticWork,internal,total" << nl;
 
     forAll(timeDirs, timei)
     {
@@ -194,6 +199,28 @@ int main(int argc, char *argv[])
             ++i;
         }
 
+        // Radius at the impact face. The first slice holding the body reads
+        // its radius half a slice above the face; with the next slice's the
+        // outline is extended to the face (the body's lowest position, or
+        // the slice's lower face if that is higher), which removes the
+        // first-order offset of a sloping outline
+        scalar faceRadius = 0;
+        for (size_t j = 0; j < zs.size(); ++j)
+        {
+            if (radius[j] > 0)
+            {
+                faceRadius = radius[j];
+                if (j + 1 < zs.size() && radius[j + 1] > 0)
+                {
+                    const scalar zFace = max(zMin, zs[j] - 0.5*dzs[j]);
+                    faceRadius +=
+                        (radius[j] - radius[j + 1])*(zs[j] - zFace)
+                       /(zs[j + 1] - zs[j]);
+                }
+                break;
+            }
+        }
+
         if (R0 < 0)
         {
             R0 = maxRadius;
@@ -259,13 +286,15 @@ int main(int argc, char *argv[])
         internal *= toFull;
 
         table<< runTime.value() << ',' << length << ',' << maxRadius << ','
-             << undeformed << ',' << zMin << ',' << axialVelocity << ','
+             << faceRadius << ',' << undeformed << ',' << zMin << ','
+             << axialVelocity << ','
              << kinetic << ',' << elastic << ','
              << plastic << ',' << internal << ','
              << kinetic + elastic + internal << nl;
 
         Info<< "Time " << runTime.timeName() << ": length " << length
-            << ", max radius " << maxRadius << ", undeformed length "
+            << ", max radius " << maxRadius << ", face radius " << faceRadius
+            << ", undeformed length "
             << undeformed << ", kinetic " << kinetic << " J, elastic "
             << elastic << " J, plastic work " << plastic << " J" << nl;
     }

@@ -17,8 +17,10 @@ final shape from rodProfile's output.
              larger (the contact grows into the mushroom and the front
              hardens), so the specimen stops earlier.
   specimen.py shape [-case <dir>] [-L0 <m>]
-      prints the final length Lf, the largest radius Rf and the radius at
-      f Lf (f = 0.2, 0.25, 1/3, 1/2, 2/3) of the last time rodProfile
+      prints the final length Lf, the foot's radius Rf at the impact face
+      (rodProfile's faceRadius: the outline of the first two cell rows
+      extended to the face, where the measured specimens' largest radius
+      lies) and the radius at f Lf (f = 0.2, 0.25, 1/3, 1/2, 2/3) of the last time rodProfile
       processed (postProcessing/rodProfile/specimen.csv and profile_*.csv),
       in mm, and writes them to postProcessing/shape.csv.
 
@@ -220,7 +222,7 @@ def shape(case):
     tab = read_rod_table(case)
     t, z, r = last_profile(case)
     Lf = tab["length"][-1]
-    Rf = tab["maxRadius"][-1]
+    Rf = tab["faceRadius"][-1]
     return Lf, Rf, [radius_at(z, r, f * Lf) for f in FRACTIONS], float(t)
 
 
@@ -258,7 +260,7 @@ def main(argv):
         f.write("quantity,value\n" + "\n".join(lines) + "\n")
     print("Final shape at t = %g s:" % t)
     print("  length Lf          %.3f mm" % (Lf * 1e3))
-    print("  largest radius Rf  %.3f mm" % (Rf * 1e3))
+    print("  foot radius Rf     %.3f mm (at the impact face)" % (Rf * 1e3))
     for n, w in zip(FRACTION_NAMES, W):
         print("  radius at %-5s Lf %.3f mm" % (n, w * 1e3))
     return 0
