@@ -71,7 +71,7 @@ def main():
     end = float(fc.get_entry(case, "system/controlDict", "endTime"))
     times = [t for t, _ in fc.time_dirs(case)]
     ok = code == 0 and times and abs(times[-1] - end) <= 1e-6 * end \
-        and "largest radius" in out
+        and "foot radius Rf" in out
     checks.check("taylorTest_run", ok,
                  "%s: exit code %s in %.0f s, last time %s of end time %g s%s"
                  % (" ".join(cmd), code, wall,
