@@ -97,7 +97,8 @@ def finished_run(case, h_mm, end=None):
         tab = read_table(case)
     except (OSError, IndexError, KeyError, ValueError):
         return None
-    if not h or abs(float(h[0]) - h_mm) > 1e-9 \
+    # run_case hands Allrun the cell size as "%g" (0.133333 for 2/15 mm)
+    if not h or abs(float(h[0]) - float("%g" % h_mm)) > 1e-9 \
             or tab["t"][-1] < (end or 80e-6) * (1 - 1e-6):
         return None
     wall = 0.0
@@ -337,7 +338,7 @@ def plot_convergence(hs, Ls, Rs, png, title):
     ax[0].set_ylabel("final length [mm]")
     ax[1].plot(hs, [x * 1e3 for x in Rs], "o-")
     ax[1].axhspan(R_BAND[0] * 1e3, R_BAND[1] * 1e3, color="0.8")
-    ax[1].set_ylabel("mushroom radius [mm]")
+    ax[1].set_ylabel("mushroom radius at the impact face [mm]")
     for a in ax:
         a.set_xlabel("cell size h [mm]")
         a.invert_xaxis()
