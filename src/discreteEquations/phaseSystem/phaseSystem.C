@@ -112,6 +112,7 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
         dict_.getOrDefault<scalar>("massFractionTrace", massFractionMinor_)
     ),
     gasTraceRatio_(dict_.getOrDefault<scalar>("gasTraceRatio", 1)),
+    dustDensityRatio_(dict_.getOrDefault<scalar>("dustDensityRatio", 0)),
     pVacuum_(dict_.getOrDefault<scalar>("pVacuum", 1)),
     U_
     (
@@ -220,6 +221,13 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
             << exit(FatalIOError);
     }
 
+    if (!(dustDensityRatio_ >= 0 && dustDensityRatio_ < 1))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Need 0 <= dustDensityRatio < 1, not " << dustDensityRatio_
+            << exit(FatalIOError);
+    }
+
     checkFieldNames({"alpha.", "rho.", "A.", "p."});
 
     const wordList derivedTypes(boundaryKinds::derivedPatchTypes(mesh));
@@ -250,6 +258,15 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
                 k, name, phaseDict, pMixture_, derivedTypes, mirrorTypes
             )
         );
+    }
+
+    dustDensity_.setSize(phases_.size(), 0);
+    forAll(phases_, k)
+    {
+        if (phase(k).solid())
+        {
+            dustDensity_[k] = dustDensityRatio_*phase(k).rho0();
+        }
     }
 
     // Field files of the carried variables that name no phase

@@ -40,7 +40,7 @@ Foam::scalar Foam::stableTimeStep::deltaT(const cellStates& cells) const
             (
                 !phases_.minor
                 (
-                    alpha[celli], alpha[celli]*rho[celli], rhoMix[celli]
+                    k, alpha[celli], alpha[celli]*rho[celli], rhoMix[celli]
                 )
             )
             {

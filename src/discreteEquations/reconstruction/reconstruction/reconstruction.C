@@ -120,7 +120,8 @@ void Foam::reconstruction::markMinor(std::vector<phaseSide>& s) const
     }
     for (label k = 0; k < nPhases_; ++k)
     {
-        s[k].minor = phases_.minor(s[k].alpha, s[k].alpha*s[k].rho, rhoMix);
+        s[k].minor =
+            phases_.minor(k, s[k].alpha, s[k].alpha*s[k].rho, rhoMix);
     }
 }
 
