@@ -49,16 +49,9 @@ ENERGY_TOL = 1e-7
 
 
 def set_ratio(case, ratio):
-    """dustDensityRatio <ratio>; after the phases list"""
-    path = os.path.join(case, "constant", "phaseProperties")
-    with open(path) as f:
-        text = f.read()
-    text, n = re.subn(r"(\n\s*phases\s*\([^)]*\)\s*;)",
-                      r"\1\ndustDensityRatio %g;" % ratio, text, count=1)
-    if n != 1:
-        raise fc.FoamError("no phases list in " + path)
-    with open(path, "w") as f:
-        f.write(text)
+    """dustDensityRatio <ratio>; in constant/phaseProperties"""
+    fc.set_entry(case, os.path.join("constant", "phaseProperties"),
+                 "dustDensityRatio", "%g" % ratio)
 
 
 def run_bar(name, speed, end, write, ratio, check=True):

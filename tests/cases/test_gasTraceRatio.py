@@ -52,16 +52,9 @@ CONSERVATION_TOL = 1e-12
 
 
 def set_rule(case, ratio):
-    """gasTraceRatio <ratio>; after the phases list"""
-    path = os.path.join(case, "constant", "phaseProperties")
-    with open(path) as f:
-        text = f.read()
-    text, n = re.subn(r"(\n\s*phases\s*\([^)]*\)\s*;)",
-                      r"\1\ngasTraceRatio %g;" % ratio, text, count=1)
-    if n != 1:
-        raise fc.FoamError("no phases list in " + path)
-    with open(path, "w") as f:
-        f.write(text)
+    """gasTraceRatio <ratio>; in constant/phaseProperties"""
+    fc.set_entry(case, os.path.join("constant", "phaseProperties"),
+                 "gasTraceRatio", "%g" % ratio)
 
 
 def run_plate(name, ratio):
