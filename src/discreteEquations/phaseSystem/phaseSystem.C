@@ -112,7 +112,6 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
         dict_.getOrDefault<scalar>("massFractionTrace", massFractionMinor_)
     ),
     gasTraceRatio_(dict_.getOrDefault<scalar>("gasTraceRatio", 1)),
-    dustDensityRatio_(dict_.getOrDefault<scalar>("dustDensityRatio", 0)),
     pVacuum_(dict_.getOrDefault<scalar>("pVacuum", 1)),
     U_
     (
@@ -221,10 +220,12 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
             << exit(FatalIOError);
     }
 
-    if (!(dustDensityRatio_ >= 0 && dustDensityRatio_ < 1))
+    const scalar dustDensityRatio =
+        dict_.getOrDefault<scalar>("dustDensityRatio", 0);
+    if (!(dustDensityRatio >= 0 && dustDensityRatio < 1))
     {
         FatalIOErrorInFunction(dict_)
-            << "Need 0 <= dustDensityRatio < 1, not " << dustDensityRatio_
+            << "Need 0 <= dustDensityRatio < 1, not " << dustDensityRatio
             << exit(FatalIOError);
     }
 
@@ -265,7 +266,7 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
     {
         if (phase(k).solid())
         {
-            dustDensity_[k] = dustDensityRatio_*phase(k).rho0();
+            dustDensity_[k] = dustDensityRatio*phase(k).rho0();
         }
     }
 
