@@ -13,7 +13,7 @@ piston's speed.
 
 Reference: the exact two-wave solution computed here from the model's own
 jump conditions (tests/lib/elasticPlasticHugoniot.py, piston()): the
-Mie-Grueneisen formulas of MATERIALS.md section 1 for e_h, the metal shear
+Mie-Grueneisen formulas of docs/model.md section 10.1 for e_h, the metal shear
 energy e_e = mu/(8 rho0)(j2 - 3) with the uniaxial-strain unimodular Finger
 tensor g = diag(l, l^-1/2, l^-1/2), l = (rho/rho0)^(4/3) in the elastic
 precursor (cobasis A = diag(rho/rho0, 1, 1)), the yield condition

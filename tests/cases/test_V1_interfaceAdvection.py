@@ -20,7 +20,7 @@ copper cobasis A must stay A0 = I. Meshes:
 Each mesh runs at first and at second order (discreteEquations/order 1
 and 2 in system/fvSchemes). The '_MieGruneisen' variants (1-D, and the
 triangles with u0 along the diagonal) give the copper the Mie-Grueneisen
-equation of state of MATERIALS.md (rho0 8930, c0 3940, s 1.489, Gamma0
+equation of state of docs/model.md 10.1 (rho0 8930, c0 3940, s 1.489, Gamma0
 2.02, Cv 383, T0 298; elasticity rho0 8930 and rho.copper 8930 to match):
 Abgrall's criterion across a Mie-Grueneisen / stiffened-gas interface,
 with the same bounds (rho0 c0^2 = 1.39e11 Pa is the scale of the MG

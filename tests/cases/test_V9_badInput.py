@@ -72,7 +72,7 @@ Runs that must complete (they stopped before a fix):
                       fields, the air's pressure at or above the floor and
                       the log reporting the floored cells.
     mieGruneisenRebound
-                      copper as Mie-Grueneisen (MATERIALS.md, rho0 8900)
+                      copper as Mie-Grueneisen (docs/model.md 10.1, rho0 8900)
                       and the air at -3000 m/s onto a slip wall (the left
                       patch): a 240 GPa shock, then the hot copper
                       rebounds. The run completes, with finite fields and
@@ -144,7 +144,7 @@ def copy_field(case, src, dst):
 PP = "constant/phaseProperties"
 FS = "system/fvSchemes"
 
-# OFHC copper (MATERIALS.md section 3) in place of 'sigmaY 3e8;'
+# OFHC copper (docs/materials.md, etc/materials/OFHCcopper) in place of 'sigmaY 3e8;'
 JC = ("yieldStress { type JohnsonCook; A 9e7; B 2.92e8; n 0.31; C 0.025; "
       "m 1.09; Tr 298; Tm 1356; }")
 
@@ -314,7 +314,7 @@ def traces(value):
 
 
 def mie_gruneisen(case):
-    """Copper as the Mie-Grueneisen solid of MATERIALS.md (rho0 8900 to
+    """Copper as the Mie-Grueneisen solid of docs/model.md 10.1 (rho0 8900 to
     match its elasticity), the left patch a slip wall."""
     edit(case, PP, "equationOfState { type stiffenedGas; gamma 4.22; "
          "pInf 3.42e10; }",

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Coarse settings of the copper impact tutorials (issue 4, docs/validation.md
+"""Coarse settings of the copper impact tutorials (docs/validation.md
 W1/W2): what a coarse run can decide.
 
 Runs (0.4 mm cells, 20 us of the 80 us, fields every 2 us):
@@ -37,10 +37,10 @@ Checks
                          symmetric problem must reproduce it (up to
                          round-off in the face orientation). At the
                          tutorials' maxCo 0.8 this also catches an unstable
-                         scheme: with the copper film behind the bar
-                         carried as a minor phase (before session 17,
-                         docs/numerics.md 2.7) a mode grew from round-off
-                         on the axis to 7e-3 of 227 m/s by 20 us.
+                         scheme: with a copper film behind the bar that
+                         holds most of its cells' mass carried as a minor
+                         phase (docs/numerics.md 2.7) a mode grows from
+                         round-off on the axis to 7e-3 of 227 m/s by 20 us.
 """
 import os
 import sys

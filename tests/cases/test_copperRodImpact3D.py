@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Coarse setting of tutorials/impactFoam/copperRodImpact3D (issue 4): the
+"""Coarse setting of tutorials/impactFoam/copperRodImpact3D: the
 3-D rod-on-rod impact on a snappyHexMesh mesh refined about the rods' STL
 surfaces, a quarter of the domain (symmetry planes y = 0, z = 0).
 

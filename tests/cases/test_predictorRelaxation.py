@@ -11,12 +11,12 @@ excess stress: an error of first order in the time step, which at maxCo
 Runs: the taylorBar tutorial (the W1 bar, stiffened-gas copper, THINC) on
 its coarse 0.4 mm mesh (the bar's ends on cell faces) to its end, 80 us,
 the state W1 decides, at maxCo 0.2 and 0.8, with predictorRelaxation on and
-off. (Until session 23 the runs stopped at 40 us. With the gas in a solid's
-free-surface cells a trace of the relaxation (gasTraceRatio 1, numerics
-9.2, session 24, not the default) the length at 40 us moved by 0.024 mm
-with the return and 0.058 mm without: the error the return removes had not
-grown yet, and the ratio measured the diffuse ends' own time-step
-sensitivity, 6 % of a cell. At 80 us: 0.026 against 0.487 mm.)
+off. (The runs go to 80 us, not 40: with the gas in a solid's free-surface
+cells a trace of the relaxation (gasTraceRatio 1, numerics 9.2) the length
+at 40 us moves by 0.024 mm with the return and 0.058 mm without: the error
+the return removes has not grown yet, and the ratio would measure the
+diffuse ends' own time-step sensitivity, 6 % of a cell. At 80 us: 0.026
+against 0.487 mm.)
 
 Checks
   predictorRelaxation_timeStepError  from maxCo 0.2 to 0.8, the bar's

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """The real-metal models in a 3-phase impact, serial and parallel
-(docs/model.md sections 10-11, MATERIALS.md section 5).
+(docs/model.md sections 10-11).
 
 Case: the closed box of V6 (tutorials/impactFoam/closedBox: copper disc
 and aluminium block colliding in air, slip walls, random velocities, 150
@@ -58,7 +58,7 @@ def real_copper(case):
 
 
 def e_mie_gruneisen(rho, p):
-    """e_h(rho, p) of MATERIALS.md section 1."""
+    """e_h(rho, p) of docs/model.md section 10.1."""
     eta = 1 - MG["rho0"] / rho
     K = MG["rho0"] * MG["c0"] ** 2
     pref = np.where(eta >= 0, K * eta / (1 - MG["s"] * eta) ** 2, K * eta)

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Restart from the latest time and function objects (issue: the solver
-behaves as OpenFOAM users expect).
+"""Restart from the latest time and function objects (the solver behaves as
+OpenFOAM users expect).
 
 The Favrie double impact (aluminium, 200 cells, t = 5e-5 s) runs once
 straight through and once in two legs, the second started from the latest
