@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """V3 (docs/validation.md): Favrie's neo-Hookean aluminium Riemann problems
 against the reference solutions of tests/cases/data/favrie-neohookean
-(a copy of the project's shared data set; see its README.md).
+(see its README.md).
 
 The tutorials favrieShockTube and favrieDoubleImpact are run unchanged
 (./Allrun: 1000 cells on [0, 1] m, t = 5e-5 s). The reference was computed
