@@ -35,7 +35,7 @@ so that the piston moves at 20 m/s; positions from the wall):
   end below the yield surface (sigmaEq 71-89 MPa), so that S_xx, and p =
   -sigma_xx + S_xx with it, are off by up to 1.8 % while u and sigma_xx
   are exact there; the layer's p errors are printed.
-Checks (VALIDATION.md V11): u, p and sigma_xx within 1 % of the exact
+Checks (docs/validation.md V11): u, p and sigma_xx within 1 % of the exact
 values in every cell of both plateaus (u relative to its exact value in
 the undisturbed copper's frame: 4.71 m/s in the precursor, 20 m/s behind
 the plastic shock); both fronts within 1 % of the distance they travelled

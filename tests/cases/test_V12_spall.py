@@ -44,7 +44,7 @@ failed cell's damage below 1), and mass of each phase and total energy are
 conserved to 1e-12 relative.
 
 The acoustic estimate of the spall strength from the pull-back (within
-15 % in VALIDATION.md) is decided by validation/spall/validate, not here.
+15 % in docs/validation.md V12) is decided by validation/spall/validate, not here.
 """
 import os
 import re
