@@ -252,18 +252,18 @@ int main(int argc, char *argv[])
             const scalarField& rho = phases.rho(j).primitiveField();
             const scalarField& p = phases.p(j).primitiveField();
             const tensorField& A = phases.A(j).primitiveField();
-            const label iW = phases[j].plasticWorkIndex();
+            const inelasticModel& inelastic = phases[j].inelastic();
+            scalar carried[phaseModel::maxCarried];
             forAll(C, celli)
             {
                 const scalar m = a[celli]*rho[celli]*V[celli];
                 internal += m*ph.eos().e(rho[celli], p[celli]);
                 if (ph.solid())
                 {
-                    const scalarField& wP =
-                        phases[j].carried(iW).primitiveField();
                     elastic +=
                         m*ph.elasticEnergy(foamEigen::toEigen(A[celli]));
-                    plastic += m*wP[celli];
+                    phases[j].inelasticState(celli, carried);
+                    plastic += m*inelastic.plasticWork(carried);
                 }
             }
         }

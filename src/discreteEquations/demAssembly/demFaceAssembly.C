@@ -31,12 +31,12 @@ Foam::demFaceAssembly::demFaceAssembly
     stamp_(0)
 {
     const label nCells = phases.mesh().nCells();
-    damageIndex_.resize(nPhases_);
-    failure_.resize(nPhases_);
+    tensionLimit_.resize(nPhases_);
     for (label k = 0; k < nPhases_; ++k)
     {
-        damageIndex_[k] = phases[k].damageIndex();
-        failure_[k] = &phases[k].failure();
+        const inelasticModel& inelastic = phases[k].inelastic();
+        tensionLimit_[k] =
+            inelastic.limitsTension() ? &inelastic : nullptr;
         stride_[k] = iCarried + phases[k].nCarried();
         sums_[k].resize(nCells*stride_[k]);
     }
@@ -53,15 +53,15 @@ void Foam::demFaceAssembly::limitFailedTension
     riemannSolution& sol
 ) const
 {
-    const label iD = damageIndex_[k];
-    if (iD < 0)
+    const inelasticModel* inelastic = tensionLimit_[k];
+    if (!inelastic)
     {
         return;
     }
     const double floor = max
     (
-        failure_[k]->pFloor(sl.carried[iD]),
-        failure_[k]->pFloor(sr.carried[iD])
+        inelastic->pFloor(sl.carried),
+        inelastic->pFloor(sr.carried)
     );
     if (!(floor > -GREAT))
     {

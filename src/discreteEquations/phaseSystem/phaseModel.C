@@ -146,8 +146,6 @@ Foam::phaseModel::phaseModel
 :
     index_(index),
     law_(name, dict),
-    plastic_(),
-    failure_(),
     isentropicRelaxation_(false),
     isentrope_(-1, 0),
     pCavitation_(-GREAT),
@@ -175,51 +173,16 @@ Foam::phaseModel::phaseModel
         ),
         pMixture.mesh()
     ),
-    epsilonPIndex_(-1),
-    plasticWorkIndex_(-1),
-    damageIndex_(-1)
+    nInelastic_(0)
 {
     const fvMesh& mesh = pMixture.mesh();
     const word timeName(mesh.time().timeName());
 
     readRelaxationPath(dict);
 
-    if (law_.solid())
-    {
-        plastic_ = plasticModel::New(name, dict.subDict("plasticity"));
-    }
-    else
-    {
-        dictionary noneDict;
-        noneDict.add("type", "none");
-        plastic_ = plasticModel::New(name, noneDict);
-    }
-    if (law_.solid())
-    {
-        failure_ = failureModel::New(name, dict);
-    }
-    else
-    {
-        if (dict.found("failure"))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Phase " << name << ": failure is for solids only"
-                << exit(FatalIOError);
-        }
-        failure_ = failureModel::New(name, dictionary());
-    }
-    const char* needsT =
-        plastic_->needsTemperature() ? "plasticity"
-      : failure_->needsTemperature() ? "failure"
-      : nullptr;
-    if (needsT && !law_.eos().hasTemperature())
-    {
-        FatalIOErrorInFunction(dict)
-            << "Phase " << name << ": its " << needsT << " needs a"
-            << " temperature, and its equationOfState " << law_.eos().type()
-            << " gives none: add Cv to equationOfState"
-            << exit(FatalIOError);
-    }
+    // Stops on a model that needs a temperature the equation of state
+    // does not give
+    inelastic_ = inelasticModel::New(law_, dict);
     const bool writeT = readWriteTemperature(dict);
 
     IOobject pIO
@@ -277,12 +240,10 @@ Foam::phaseModel::phaseModel
         );
     }
 
-    // Carried variables: those of the models, then the passive tracers
-    if (law_.solid())
-    {
-        carriedInfo_.append(plastic_->carriedVariables());
-        carriedInfo_.append(failure_->carriedVariables());
-    }
+    // Carried variables: those of the inelastic model, then the passive
+    // tracers
+    carriedInfo_.append(inelastic_->carriedVariables());
+    nInelastic_ = carriedInfo_.size();
     for
     (
         const word& tracer
@@ -337,10 +298,6 @@ Foam::phaseModel::phaseModel
                 volScalarField(io, mesh).primitiveField();
         }
     }
-    epsilonPIndex_ = carriedIndex("epsilonP");
-    plasticWorkIndex_ = carriedIndex("plasticWork");
-    damageIndex_ = carriedIndex("damage");
-
     checkInitialState();
     initCobasis(readA);
 }

@@ -299,8 +299,8 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
         {
             Info<< ", elasticity " << law.elastic().type()
                 << " (rho0 " << law.rho0()
-                << ", mu " << law.mu() << ")"
-                << ", plasticity " << phase.plastic().type();
+                << ", mu " << law.mu() << "), ";
+            phase.inelastic().describe(Info);
         }
         if (phase.nCarried())
         {

@@ -803,27 +803,26 @@ bool Foam::mechanicalRelaxation::relaxPlastic
         }
         if (ph.solid() && !trace_[k] && !failed_[k])
         {
-            // The temperature before the step, for a flow stress or a
-            // damage that depends on it (the phase model made sure the
-            // equation of state has one)
-            const plasticModel& plastic = phase.plastic();
-            const bool needsT =
-                plastic.needsTemperature()
-             || phase.failure().needsTemperature();
-            const scalar T = needsT ? ph.eos().T(1/v0_[k], eh0_[k]) : 0;
-            scalar& epsP = phase.carried(phase.epsilonPIndex())[c];
-            const scalar epsPOld = epsP;
-            const scalar heat = plastic.correct
-            (
-                q.A[k][c], epsP, ph.elastic(), dt, T
-            );
-            eh0_[k] += heat;
-            phase.carried(phase.plasticWorkIndex())[c] += heat;
-            heated = heated || heat > 0;
-            if (phase.damageIndex() >= 0)
+            // The plastic return, its heat and the damage it does
+            // (inelasticModel), on the phase's fields of this cell
+            const inelasticModel& inelastic = phase.inelastic();
+            const label nI = phase.nInelastic();
+            scalar carried[phaseModel::maxCarried];
+            phase.inelasticState(c, carried);
+            const scalar heat =
+                inelastic.relax(q.A[k][c], carried, 1/v0_[k], eh0_[k], dt);
+            for (label i = 0; i < nI; ++i)
             {
-                updateDamage(c, q, k, epsP - epsPOld, dt, T);
-                heated = heated || failed_[k];
+                phase.carried(i)[c] = carried[i];
+            }
+            heated = heated || heat > 0;
+            if (inelastic.failed(carried))
+            {
+                removeShear(c, q, k);
+                failed_[k] = true;
+                held_[k] = true;
+                pHeld_[k] = inelastic.pFloor(carried);
+                heated = true;
             }
         }
     }

@@ -28,24 +28,29 @@ void Foam::mechanicalRelaxation::relaxFailed
     for (label k = 0; k < nPhases_; ++k)
     {
         const phaseModel& phase = phases_[k];
-        const label iD = phase.damageIndex();
+        const inelasticModel& inelastic = phase.inelastic();
         failed_[k] = false;
         held_[k] = false;
         pinned_[k] = false;
-        if (iD < 0 || trace_[k])
+        if (!inelastic.limitsTension() || trace_[k])
         {
             // A trace's state is the cell's business (relaxTraces)
             continue;
         }
 
-        // The tensile cutoff acts within the step that passes it (at once,
-        // or over spallTime), also on a cell whose damage the transport
-        // mixed below 1
-        const failureModel& failure = phase.failure();
-        scalar& D = q.carried[k][iD][c];
+        // The tensile cutoff of the step, and the floor it leaves
+        const label nI = phase.nInelastic();
+        scalar carried[phaseModel::maxCarried];
+        for (label i = 0; i < nI; ++i)
+        {
+            carried[i] = q.carried[k][i][c];
+        }
         const scalar pk = phase.eos().p(1/v0_[k], eh0_[k]);
-        D = failure.spall(D, pk, dt);
-        const scalar floor = failure.pFloor(D);
+        const scalar floor = inelastic.tension(carried, pk, dt);
+        for (label i = 0; i < nI; ++i)
+        {
+            q.carried[k][i][c] = carried[i];
+        }
         if (!(floor > -GREAT))
         {
             continue;
@@ -53,10 +58,10 @@ void Foam::mechanicalRelaxation::relaxFailed
         held_[k] = true;
         pHeld_[k] = floor;
 
-        if (failureModel::failed(D))
+        const bool failed = inelastic.failed(carried);
+        if (failed)
         {
             // No deviatoric stress: the shear energy becomes heat
-            D = 1;
             failed_[k] = true;
             removeShear(c, q, k);
         }
@@ -64,7 +69,7 @@ void Foam::mechanicalRelaxation::relaxFailed
         // Failing (over spallTime) and in tension, it holds its own state
         // down to -sigmaSpall: fluids that the opening let into the cell
         // take no tension from it before it has failed
-        pinned_[k] = !failureModel::failed(D) && pk < 0;
+        pinned_[k] = !failed && pk < 0;
 
         // In tension below its floor (the whole solid, or a trace of it
         // next to a fluid) it opens up: the fluids of the cell take the
@@ -111,46 +116,6 @@ void Foam::mechanicalRelaxation::relaxFailed
             held_[k] = false;
             pinned_[k] = false;
         }
-    }
-}
-
-
-void Foam::mechanicalRelaxation::updateDamage
-(
-    const label c,
-    conservedState& q,
-    const label k,
-    const scalar dEpsP,
-    const scalar dt,
-    const scalar T
-)
-{
-    phaseModel& phase = phases_[k];
-    const failureModel& failure = phase.failure();
-    scalar& D = phase.carried(phase.damageIndex())[c];
-
-    const scalar rho = 1/v0_[k];
-    const scalar p = phase.eos().p(rho, eh0_[k]);
-    const scalar epsPDot = dt > 0 ? dEpsP/dt : 0;
-
-    // On the yield surface after a plastic step, the Von Mises stress is
-    // the flow stress
-    const scalar sigmaEq =
-        dEpsP > 0
-      ? phase.plastic().sigmaY
-        (
-            phase.carried(phase.epsilonPIndex())[c], epsPDot, T
-        )
-      : 0;
-
-    D = failure.damage(D, dEpsP, epsPDot, p, sigmaEq, T);
-    if (failureModel::failed(D))
-    {
-        D = 1;
-        removeShear(c, q, k);
-        failed_[k] = true;
-        held_[k] = true;
-        pHeld_[k] = failure.cavitationPressure();
     }
 }
 

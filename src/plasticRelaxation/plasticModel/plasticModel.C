@@ -1,5 +1,4 @@
 #include "plasticModel.H"
-#include "carriedVariable.H"
 
 namespace Foam
 {
@@ -17,10 +16,3 @@ Foam::plasticModel::plasticModel
 {}
 
 
-Foam::carriedVariableList Foam::plasticModel::carriedVariables() const
-{
-    carriedVariableList vars;
-    vars.append(carriedVariable("epsilonP", dimless, 0, 0));
-    vars.append(carriedVariable("plasticWork", dimEnergy/dimMass, 0, 0));
-    return vars;
-}

@@ -435,42 +435,20 @@ void Foam::reconstructions::MUSCLHancock::relaxPredicted
 ) const
 {
     const phaseModel& phase = phases_[k];
-    const hyperelasticPhase& ph = phase.law();
-    const cobasis::matrix A(Ac + dtA);
-    const double detA = A.determinant();
-    if (!(detA > 0))
+    cobasis::matrix A(Ac + dtA);
+    if (!(A.determinant() > 0))
     {
         // Inadmissible: the face states fall back to the cell's
         return;
     }
 
-    const label iD = phase.damageIndex();
-    if (iD >= 0 && failureModel::failed(phase.carried(iD)[c]))
+    // The phase's plastic step over the half step (inelasticModel)
+    scalar carried[phaseModel::maxCarried];
+    phase.inelasticState(c, carried);
+    if (phase.inelastic().predict(A, carried, rho, p, halfDt))
     {
-        // A failed phase carries no shear (mechanicalRelaxation::
-        // removeShear)
-        dtA = cobasis::rotation(A)*std::cbrt(detA) - Ac;
-        return;
+        dtA = A - Ac;
     }
-
-    const plasticModel& plastic = phase.plastic();
-    if (!plastic.plastic())
-    {
-        return;
-    }
-    const label iEps = phase.epsilonPIndex();
-    scalar epsP = iEps >= 0 ? phase.carried(iEps)[c] : 0;
-    const scalar T =
-        plastic.needsTemperature() ? ph.eos().T(rho, ph.eos().e(rho, p)) : 0;
-    cobasis::matrix U(A);
-    plastic.correct(U, epsP, ph.elastic(), halfDt, T);
-    if (U == A)
-    {
-        // Within the yield surface (the return leaves A bit for bit)
-        return;
-    }
-    // The return gives the stretch; the prediction keeps its rotation
-    dtA = cobasis::rotation(A)*U - Ac;
 }
 
 

@@ -85,15 +85,6 @@ void Foam::failureModel::badEntry
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::carriedVariableList Foam::failureModel::carriedVariables() const
-{
-    carriedVariableList vars;
-    if (active())
-    {
-        vars.append(carriedVariable("damage", dimless, 0, 0, 1));
-    }
-    return vars;
-}
 
 
 Foam::scalar Foam::failureModel::damage
