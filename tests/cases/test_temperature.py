@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Temperature and plastic heat through the solver (docs/validation.md,
-'Temperature'; docs/model.md sections 10.1 and 10.3): one step
+other tests, test_temperature; docs/model.md sections 10.1 and 10.3): one step
 of the small 1-D copper/air case of V9 (tests/cases/badInput/copperAir,
 50 cells) with both phases at rest and the copper cobasis strained beyond
 the yield surface (0/A.copper = diag(1.02, 1/1.02, 1), uniform): the
