@@ -43,9 +43,12 @@ directories holds a NaN.
                   THINCCoeffs { range bogus; } with THINC
     unknownPressureRelaxation
                   air with pressureRelaxation adiabatic (names the phase)
-    massFractionTrace
-                  massFractionTrace 2 in phaseProperties (a mass fraction
+    massFractionMinor
+                  massFractionMinor 2 in phaseProperties (a mass fraction
                   is below 1)
+    unknownThreshold
+                  alphaMinr 1e-3 in phaseProperties (an entry no rule reads:
+                  the message names it and lists the valid ones)
     gasTraceRatio gasTraceRatio -1 in phaseProperties (a ratio of volumes
                   is not negative)
 The valid base case must run to its end time (control).
@@ -244,11 +247,16 @@ BAD_INPUT = [
                     " alphaCompression 2;"),
      [r"alphaCompression 2", r"THINC"],
      "THINC with alphaCompression 2"),
-    ("massFractionTrace",
+    ("massFractionMinor",
      lambda c: edit(c, PP, "phases (copper air);",
-                    "phases (copper air);\nmassFractionTrace 2;"),
-     [r"massFractionTrace \(2\)", r"< 1"],
-     "massFractionTrace 2"),
+                    "phases (copper air);\nmassFractionMinor 2;"),
+     [r"massFractionMinor \(2\)", r"< 1"],
+     "massFractionMinor 2"),
+    ("unknownThreshold",
+     lambda c: edit(c, PP, "phases (copper air);",
+                    "phases (copper air);\nalphaMinr 1e-3;"),
+     [r"Unknown entry alphaMinr", r"alphaMinor", r"dustDensityRatio"],
+     "alphaMinr 1e-3 (a misspelled threshold)"),
     ("gasTraceRatio",
      lambda c: edit(c, PP, "phases (copper air);",
                     "phases (copper air);\ngasTraceRatio -1;"),
@@ -379,6 +387,23 @@ def check_vacuum():
                  "%.3g" % (t, finite, len(floored),
                            max([int(n) for n in floored] or [0]),
                            p[m].min(), rho[m].min()))
+
+
+def check_removed_threshold():
+    """massFractionTrace, an entry no longer read: the run completes and
+    the log warns, naming the entry and the rule that replaced it."""
+    tag = "V9_removedThresholdWarns"
+    case, log = run_to_completion(
+        tag, "removedThreshold",
+        [lambda c: edit(c, PP, "phases (copper air);",
+                        "phases (copper air);\nmassFractionTrace 1e-5;")])
+    if case is None:
+        return
+    warned = re.search(r"massFractionTrace is no longer read[^\n]*\n?[^\n]*"
+                       r"massFractionMinor", log)
+    checks.check(tag, warned is not None,
+                 "warning in the log: %s" % (one_line(warned.group(0))
+                                             if warned else "none"))
 
 
 def check_rebound():
@@ -656,6 +681,7 @@ def main():
         check_unphysical(name, modifications, what, patterns)
     check_rebound()
     check_vacuum()
+    check_removed_threshold()
     checks.exit()
 
 

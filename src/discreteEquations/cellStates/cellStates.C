@@ -38,7 +38,7 @@ void Foam::cellStates::update()
         const tensorField& A = phase.A().primitiveField();
 
         const scalarField& alpha = phase.alpha().primitiveField();
-        const scalar aMinor = phases_.alphaMinor();
+        const phaseRegimes& regimes = phases_.regimes();
         const scalar cT2 = ph.cT2();
         const bool solid = ph.solid();
 
@@ -68,7 +68,7 @@ void Foam::cellStates::update()
             speeds& sc = speeds_[k][celli];
             sc.c2h = ph.eos().c2(rho[celli], p[celli]);
             scalar a2;
-            if (alpha[celli] < aMinor)
+            if (regimes.thin(alpha[celli]))
             {
                 a2 = max(sc.c2h, scalar(0)) + 4.0/3.0*cT2;
             }

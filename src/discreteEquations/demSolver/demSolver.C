@@ -442,7 +442,7 @@ void Foam::demSolver::newState(const scalar dt, conservedState& q) const
         }
 
         const bool solid = phases_.phase(k).solid();
-        const scalar alphaTrace = phases_.alphaTrace();
+        const phaseRegimes& regimes = phases_.regimes();
         const scalarField& alpha = phases_.alpha(k).primitiveField();
         const scalarField& rho = phases_.rho(k).primitiveField();
         const tensorField& A = phases_.A(k).primitiveField();
@@ -486,7 +486,7 @@ void Foam::demSolver::newState(const scalar dt, conservedState& q) const
             }
 
             const cobasis::matrix Ac(toEigen(A[c]));
-            if (solid && q.alpha[k][c] < alphaTrace)
+            if (solid && regimes.trace(q.alpha[k][c]))
             {
                 // A trace after the step: the relaxation resets its cobasis
                 // unstrained and pays its energy (mechanicalRelaxation::
@@ -592,7 +592,7 @@ void Foam::demSolver::clearFallback()
 
     if (fallbackInterfaces_)
     {
-        const scalar aMinor = phases_.alphaMinor();
+        const scalar aMinor = phases_.regimes().alphaMinor();
         DynamicList<label> mixed;
         for (label c = 0; c < mesh_.nCells(); ++c)
         {

@@ -76,9 +76,32 @@ void Foam::phaseSystem::checkAlpha()
         floorAndClose
         (
             phases_.size(),
-            alphaMin_,
+            regimes_.alphaMin(),
             [&](const label k) -> scalar& { return alpha(k)[celli]; }
         );
+    }
+}
+
+
+void Foam::phaseSystem::checkKeywords() const
+{
+    wordList valid(phaseRegimes::keywords);
+    valid.append("phases");
+    valid.append(phaseNames_);
+    for (const Pair<word>& removed : phaseRegimes::removedKeywords)
+    {
+        valid.append(removed.first());
+    }
+    for (const word& key : dict_.toc())
+    {
+        if (!valid.found(key))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Unknown entry " << key << " in " << dict_.objectPath()
+                << nl << "Valid entries: the phases " << phaseNames_
+                << ", phases and " << phaseRegimes::keywords
+                << exit(FatalIOError);
+        }
     }
 }
 
@@ -100,19 +123,7 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
         )
     ),
     phaseNames_(dict_.get<wordList>("phases")),
-    alphaMin_(dict_.getOrDefault<scalar>("alphaMin", 1e-8)),
-    alphaTrace_(dict_.getOrDefault<scalar>("alphaTrace", 1e-6)),
-    alphaMinor_(dict_.getOrDefault<scalar>("alphaMinor", 1e-3)),
-    massFractionMinor_
-    (
-        dict_.getOrDefault<scalar>("massFractionMinor", 1e-6)
-    ),
-    massFractionTrace_
-    (
-        dict_.getOrDefault<scalar>("massFractionTrace", massFractionMinor_)
-    ),
-    gasTraceRatio_(dict_.getOrDefault<scalar>("gasTraceRatio", 1)),
-    pVacuum_(dict_.getOrDefault<scalar>("pVacuum", 1)),
+    regimes_(dict_),
     U_
     (
         IOobject
@@ -187,47 +198,7 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
             << "No phases listed in " << dict_.objectPath()
             << exit(FatalIOError);
     }
-    if
-    (
-        !(
-            alphaMin_ > 0 && alphaMin_ < alphaTrace_
-         && alphaTrace_ <= alphaMinor_ && alphaMinor_ < 0.5
-        )
-    )
-    {
-        FatalIOErrorInFunction(dict_)
-            << "Need 0 < alphaMin (" << alphaMin_ << ") < alphaTrace ("
-            << alphaTrace_ << ") <= alphaMinor (" << alphaMinor_
-            << ") < 0.5" << exit(FatalIOError);
-    }
-
-    if
-    (
-        !(massFractionMinor_ >= 0 && massFractionMinor_ < 1)
-     || !(massFractionTrace_ >= 0 && massFractionTrace_ < 1)
-    )
-    {
-        FatalIOErrorInFunction(dict_)
-            << "Need 0 <= massFractionMinor (" << massFractionMinor_
-            << ") < 1 and 0 <= massFractionTrace (" << massFractionTrace_
-            << ") < 1" << exit(FatalIOError);
-    }
-
-    if (!(gasTraceRatio_ >= 0 && std::isfinite(gasTraceRatio_)))
-    {
-        FatalIOErrorInFunction(dict_)
-            << "Need a finite gasTraceRatio >= 0, not " << gasTraceRatio_
-            << exit(FatalIOError);
-    }
-
-    const scalar dustDensityRatio =
-        dict_.getOrDefault<scalar>("dustDensityRatio", 0);
-    if (!(dustDensityRatio >= 0 && dustDensityRatio < 1))
-    {
-        FatalIOErrorInFunction(dict_)
-            << "Need 0 <= dustDensityRatio < 1, not " << dustDensityRatio
-            << exit(FatalIOError);
-    }
+    checkKeywords();
 
     checkFieldNames({"alpha.", "rho.", "A.", "p."});
 
@@ -261,13 +232,16 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
         );
     }
 
-    dustDensity_.setSize(phases_.size(), 0);
-    forAll(phases_, k)
     {
-        if (phase(k).solid())
+        List<scalar> rho0Solid(phases_.size(), scalar(0));
+        forAll(phases_, k)
         {
-            dustDensity_[k] = dustDensityRatio*phase(k).rho0();
+            if (phase(k).solid())
+            {
+                rho0Solid[k] = phase(k).rho0();
+            }
         }
+        regimes_.setReferenceDensities(rho0Solid);
     }
 
     // Field files of the carried variables that name no phase

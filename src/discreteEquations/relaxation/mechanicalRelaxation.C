@@ -57,9 +57,10 @@ Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
         // air from 1.2 kg/m^3 and 1e5 Pa) it is held at most on that
         // isentrope, where its sound speed falls with its density
         const Pair<scalar>& ref = phases_.referenceIsentrope(k);
-        if (phases_.pVacuum() >= 0 && ref.first() > 0)
+        if (phases_.regimes().vacuumFloor() && ref.first() > 0)
         {
-            const scalar pFloor = eos.pMin(ref.first()) + phases_.pVacuum();
+            const scalar pFloor =
+                eos.pMin(ref.first()) + phases_.regimes().pVacuum();
             if (pFloor > eos.pIsentropicMin(ref.first(), ref.second()))
             {
                 rhoVacuum_[k] =
@@ -280,7 +281,7 @@ bool Foam::mechanicalRelaxation::vacuumFloor(const label c, const label k)
     const equationOfState& eos = phases_.phase(k).eos();
     const scalar rho = 1/v0_[k];
     const scalar pMin = eos.pMin(rho);
-    scalar eFloor = eos.e(rho, pMin + phases_.pVacuum());
+    scalar eFloor = eos.e(rho, pMin + phases_.regimes().pVacuum());
 
     const scalar rhoOld = phases_.rho(k)[c];
     const scalar pOld = phases_.p(k)[c];
@@ -431,7 +432,7 @@ Foam::label Foam::mechanicalRelaxation::floorVolumeFractions
     return floorAndClose
     (
         nPhases_,
-        phases_.alphaMin(),
+        phases_.regimes().alphaMin(),
         [&](const label k) -> scalar& { return q.alpha[k][c]; }
     );
 }
@@ -444,13 +445,13 @@ Foam::scalar Foam::mechanicalRelaxation::collectMasses
     cobasis::vector& mom
 )
 {
-    const scalar alphaTrace = phases_.alphaTrace();
+    const phaseRegimes& regimes = phases_.regimes();
     mom.setZero();
     scalar mass = 0;
     for (label k = 0; k < nPhases_; ++k)
     {
         alpha_[k] = q.alpha[k][c];
-        trace_[k] = alpha_[k] < alphaTrace;
+        trace_[k] = regimes.trace(alpha_[k]);
 
         if (!(q.mass[k][c] > 0))
         {
@@ -460,11 +461,13 @@ Foam::scalar Foam::mechanicalRelaxation::collectMasses
             {
                 oldMix += phases_.alpha(j)[c]*phases_.rho(j)[c];
             }
-            const bool minor =
-                alpha_[k] < phases_.alphaMinor()
-             || phases_.alpha(k)[c]*phases_.rho(k)[c]
-              < phases_.massFractionMinor()*oldMix;
-            if (!minor)
+            if
+            (
+                !regimes.negligible
+                (
+                    alpha_[k], phases_.alpha(k)[c]*phases_.rho(k)[c], oldMix
+                )
+            )
             {
                 fail(c, k, "mass", q.mass[k][c]);
             }
@@ -479,7 +482,7 @@ Foam::scalar Foam::mechanicalRelaxation::collectMasses
     }
 
     // A fluid on a reference isentrope holding less than
-    // massFractionTrace of the cell's mass is a trace too, whatever its
+    // massFractionMinor of the cell's mass is a trace too, whatever its
     // volume: air inside a metal (numerical diffusion leaves such tails)
     // would otherwise take part in the pressure relaxation and cavitate
     // under the metal's tensile release waves, a gas holding no tension,
@@ -503,7 +506,7 @@ Foam::scalar Foam::mechanicalRelaxation::collectMasses
     // 4 km/s bar, where the rule left the air around it heated to 1e7 Pa
     // at 0.2 kg/m^3 and the time step halved)
     scalar alphaGasTrace = 0;
-    if (phases_.gasTraceRatio() > 0)
+    if (regimes.gasTraces())
     {
         label kSolid = -1;
         for (label k = 0; k < nPhases_; ++k)
@@ -517,13 +520,12 @@ Foam::scalar Foam::mechanicalRelaxation::collectMasses
                 kSolid = k;
             }
         }
-        if
-        (
-            kSolid >= 0
-         && m_[kSolid] > 0.5*phases_.phase(kSolid).rho0()*alpha_[kSolid]
-        )
+        if (kSolid >= 0)
         {
-            alphaGasTrace = phases_.gasTraceRatio()*alpha_[kSolid];
+            alphaGasTrace = regimes.gasTraceAlpha
+            (
+                alpha_[kSolid], m_[kSolid], phases_.phase(kSolid).rho0()
+            );
         }
     }
 
@@ -533,7 +535,7 @@ Foam::scalar Foam::mechanicalRelaxation::collectMasses
         (
             phases_.referenceIsentrope(k).first() > 0
          && (
-                m_[k] < phases_.massFractionTrace()*mass
+                regimes.lightGas(m_[k], mass)
              || alpha_[k] < alphaGasTrace
             )
         )
@@ -545,7 +547,7 @@ Foam::scalar Foam::mechanicalRelaxation::collectMasses
         // relaxTraces gives it its reference density
         if
         (
-            alpha_[k] < phases_.alphaMinor()
+            regimes.thin(alpha_[k])
          && !(m_[k] < rhoCompressed_[k]*alpha_[k])
         )
         {
@@ -611,7 +613,7 @@ void Foam::mechanicalRelaxation::relaxVelocity
             {
                 // A minor solid's cobasis that the transport inverted is
                 // reset (its elastic energy, if any, becomes heat)
-                if (!trace_[k] && !(alpha_[k] < phases_.alphaMinor()))
+                if (!trace_[k] && !phases_.regimes().thin(alpha_[k]))
                 {
                     fail(c, k, "det(A)", detA);
                 }
@@ -655,15 +657,14 @@ void Foam::mechanicalRelaxation::screenEnergies
         {
             if
             (
-                alpha_[k] < phases_.alphaMinor()
-             || m_[k] < phases_.massFractionMinor()*mass
+                phases_.regimes().negligible(alpha_[k], m_[k], mass)
             )
             {
                 trace_[k] = true;
             }
             else if
             (
-                phases_.pVacuum() >= 0 && !phases_.phase(k).solid()
+                phases_.regimes().vacuumFloor() && !phases_.phase(k).solid()
              && vacuumFloor(c, k)
             )
             {}
@@ -837,7 +838,7 @@ void Foam::mechanicalRelaxation::vacuumAfterRelaxation(const label c)
         const equationOfState& eos = phases_.phase(k).eos();
         if
         (
-            phases_.pVacuum() >= 0 && !trace_[k]
+            phases_.regimes().vacuumFloor() && !trace_[k]
          && !phases_.phase(k).solid()
          && 1/v0_[k] < eos.rhoMax()
          && !(eos.p(1/v0_[k], eh0_[k]) > eos.pMin(1/v0_[k]))

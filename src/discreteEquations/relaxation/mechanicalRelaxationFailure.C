@@ -97,7 +97,7 @@ void Foam::mechanicalRelaxation::relaxFailed
         const scalar rho = 1/v0_[k];
         if (!(eos.p(rho, eh0_[k]) > eos.pMin(rho)))
         {
-            if (phases_.pVacuum() < 0)
+            if (!phases_.regimes().vacuumFloor())
             {
                 continue;
             }

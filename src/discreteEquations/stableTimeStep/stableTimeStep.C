@@ -38,7 +38,7 @@ Foam::scalar Foam::stableTimeStep::deltaT(const cellStates& cells) const
         {
             if
             (
-                !phases_.minor
+                !phases_.regimes().unresolved
                 (
                     k, alpha[celli], alpha[celli]*rho[celli], rhoMix[celli]
                 )

@@ -19,8 +19,7 @@ void Foam::voidVelocity::correct()
     const fvMesh& mesh = phases_.mesh();
     const label nCells = mesh.nCells();
     const label nPhases = phases_.size();
-    const scalar alphaMinor = phases_.alphaMinor();
-    const scalar Ymin = phases_.massFractionMinor();
+    const phaseRegimes& regimes = phases_.regimes();
 
     // Void cells of the new state: no phase counts by volume and mass
     boolList& isVoid = isVoid_;
@@ -36,7 +35,7 @@ void Foam::voidVelocity::correct()
         for (label k = 0; k < nPhases && !counts; ++k)
         {
             const scalar alpha = phases_.alpha(k)[c];
-            counts = alpha >= alphaMinor && alpha*phases_.rho(k)[c] >= Ymin*mix;
+            counts = !regimes.negligible(alpha, alpha*phases_.rho(k)[c], mix);
         }
         isVoid[c] = !counts;
         any = any || !counts;

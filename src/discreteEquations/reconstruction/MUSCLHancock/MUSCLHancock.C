@@ -355,8 +355,8 @@ void Foam::reconstructions::MUSCLHancock::setProfile
     const scalar magG = mag(g);
     if
     (
-        alpha < phases_.alphaMinor()
-     || aRange < phases_.alphaMinor()
+        phases_.regimes().thin(alpha)
+     || aRange < phases_.regimes().alphaMinor()
      || magG < VSMALL
     )
     {
@@ -546,8 +546,8 @@ void Foam::reconstructions::MUSCLHancock::update
         for (label c = 0; c < nCells; ++c)
         {
             const bool first = firstOrderCell(c);
-            slopeCells_[c] = !(minAlpha[c] < phases_.alphaMinor()) && !first;
-            alphaCells_[c] = !(alpha[c] < phases_.alphaMinor()) && !first;
+            slopeCells_[c] = !phases_.regimes().thin(minAlpha[c]) && !first;
+            alphaCells_[c] = !phases_.regimes().thin(alpha[c]) && !first;
         }
 
         // Slopes of alpha, rho and p: fvSchemes' gradSchemes; the
@@ -641,7 +641,7 @@ void Foam::reconstructions::MUSCLHancock::update
             sl.gAlpha =
                 first ? cobasis::vector::Zero() : toEigen(gAlpha[c]);
             sl.dtAlpha = -halfDt*u.dot(sl.gAlpha);
-            sl.minor = minAlpha[c] < phases_.alphaMinor();
+            sl.minor = phases_.regimes().thin(minAlpha[c]);
             sl.sharp = false;
             if (thinc_.valid() && !first)
             {
@@ -740,7 +740,7 @@ void Foam::reconstructions::MUSCLHancock::update
         {
             const scalar a = phases_.alpha(k)[c];
             alpha[k] =
-                a >= phases_.alphaMinor()
+                !phases_.regimes().thin(a)
               ? min(max(a + slopes_[k][c].dtAlpha, 0.0), 1.0)
               : a;
             if (alpha[k] > alpha[main]) main = k;
@@ -769,7 +769,7 @@ void Foam::reconstructions::MUSCLHancock::faceState
     // closes the sum; a minor phase (below alphaMinor in the cell) keeps
     // its cell value, so it never offers the faces more than it holds
     const cobasis::vector de(toEigen(d));
-    const scalar alphaMin = phases_.alphaMin();
+    const scalar alphaMin = phases_.regimes().alphaMin();
     label main = 0;
     for (label k = 1; k < nPhases_; ++k)
     {
@@ -786,7 +786,7 @@ void Foam::reconstructions::MUSCLHancock::faceState
           ? profileFaceAlpha(profiles_[k][celli], celli, facei, d)
           : ac + sl.gAlpha.dot(de) + sl.dtAlpha;
         alphaScratch_[k] =
-            ac < phases_.alphaMinor()
+            phases_.regimes().thin(ac)
           ? ac
           : min(max(af, alphaMin), 1 - alphaMin);
         sumAlpha += alphaScratch_[k];
@@ -887,7 +887,7 @@ void Foam::reconstructions::MUSCLHancock::centreState
         cellCarried(k, celli, sk);
 
         const cellSlopes& sl = slopes_[k][celli];
-        if (sk.alpha >= phases_.alphaMinor())
+        if (!phases_.regimes().thin(sk.alpha))
         {
             sk.alpha = min(max(sk.alpha + sl.dtAlpha, 0.0), 1.0);
         }

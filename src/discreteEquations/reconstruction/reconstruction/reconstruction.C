@@ -63,7 +63,7 @@ void Foam::reconstruction::completeSide(const label k, phaseSide& s) const
 {
     const hyperelasticPhase& ph = phases_.phase(k);
     s.solid = ph.solid();
-    s.trace = s.alpha < phases_.alphaTrace();
+    s.trace = phases_.regimes().trace(s.alpha);
     s.cT = std::sqrt(ph.cT2());
     double e;
     ph.sigmaAndE(s.rho, s.p, s.A, s.sigma, e);
@@ -107,7 +107,7 @@ void Foam::reconstruction::cellSide
     s.a = cells_.a(k, celli);
     s.cT = std::sqrt(ph.cT2());
     s.solid = ph.solid();
-    s.trace = s.alpha < phases_.alphaTrace();
+    s.trace = phases_.regimes().trace(s.alpha);
 }
 
 
@@ -121,7 +121,10 @@ void Foam::reconstruction::markMinor(std::vector<phaseSide>& s) const
     for (label k = 0; k < nPhases_; ++k)
     {
         s[k].minor =
-            phases_.minor(k, s[k].alpha, s[k].alpha*s[k].rho, rhoMix);
+            phases_.regimes().unresolved
+            (
+                k, s[k].alpha, s[k].alpha*s[k].rho, rhoMix
+            );
     }
 }
 

@@ -1,0 +1,104 @@
+/*---------------------------------------------------------------------------*\
+  impactFoam: Eulerian multiphase elastic-plastic impact solver for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "phaseRegimes.H"
+#include "error.H"
+#include "Pair.H"
+#include <cmath>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::wordList Foam::phaseRegimes::keywords
+({
+    "alphaMin", "alphaTrace", "alphaMinor", "massFractionMinor",
+    "gasTraceRatio", "dustDensityRatio", "pVacuum"
+});
+
+
+const Foam::List<Foam::Pair<Foam::word>> Foam::phaseRegimes::removedKeywords
+({
+    Pair<word>
+    (
+        "massFractionTrace",
+        "a fluid on a reference isentrope is a trace below massFractionMinor"
+        " of its cell's mass"
+    )
+});
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::phaseRegimes::phaseRegimes(const dictionary& dict)
+:
+    alphaMin_(dict.getOrDefault<scalar>("alphaMin", 1e-8)),
+    alphaTrace_(dict.getOrDefault<scalar>("alphaTrace", 1e-6)),
+    alphaMinor_(dict.getOrDefault<scalar>("alphaMinor", 1e-3)),
+    massFractionMinor_(dict.getOrDefault<scalar>("massFractionMinor", 1e-6)),
+    gasTraceRatio_(dict.getOrDefault<scalar>("gasTraceRatio", 1)),
+    dustDensityRatio_(dict.getOrDefault<scalar>("dustDensityRatio", 0)),
+    pVacuum_(dict.getOrDefault<scalar>("pVacuum", 1))
+{
+    for (const Pair<word>& removed : removedKeywords)
+    {
+        if (dict.found(removed.first()))
+        {
+            IOWarningInFunction(dict)
+                << removed.first() << " is no longer read and is ignored: "
+                << removed.second() << endl;
+        }
+    }
+
+    if
+    (
+        !(
+            alphaMin_ > 0 && alphaMin_ < alphaTrace_
+         && alphaTrace_ <= alphaMinor_ && alphaMinor_ < 0.5
+        )
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "Need 0 < alphaMin (" << alphaMin_ << ") < alphaTrace ("
+            << alphaTrace_ << ") <= alphaMinor (" << alphaMinor_
+            << ") < 0.5" << exit(FatalIOError);
+    }
+    if (!(massFractionMinor_ >= 0 && massFractionMinor_ < 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Need 0 <= massFractionMinor (" << massFractionMinor_
+            << ") < 1" << exit(FatalIOError);
+    }
+    if (!(gasTraceRatio_ >= 0 && std::isfinite(gasTraceRatio_)))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Need a finite gasTraceRatio >= 0, not " << gasTraceRatio_
+            << exit(FatalIOError);
+    }
+    if (!(dustDensityRatio_ >= 0 && dustDensityRatio_ < 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Need 0 <= dustDensityRatio < 1, not " << dustDensityRatio_
+            << exit(FatalIOError);
+    }
+    if (!std::isfinite(pVacuum_))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Need a finite pVacuum, not " << pVacuum_
+            << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::phaseRegimes::setReferenceDensities(const UList<scalar>& rho0Solid)
+{
+    dustDensity_.setSize(rho0Solid.size());
+    forAll(rho0Solid, k)
+    {
+        dustDensity_[k] = dustDensityRatio_*rho0Solid[k];
+    }
+}
+
+
+// ************************************************************************* //
