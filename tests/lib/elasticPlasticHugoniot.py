@@ -58,7 +58,7 @@ class StiffenedGas(object):
 
 class MieGruneisen(object):
     """Mie-Grueneisen with the linear Us-up Hugoniot from rest as reference
-    curve and rho Gamma = rho0 Gamma0, as in MATERIALS.md section 1 and
+    curve and rho Gamma = rho0 Gamma0, as in docs/model.md section 10.1 and
     src/equationsOfState/MieGruneisen (eta = 1 - rho0/rho):
       p_ref = rho0 c0^2 eta/(1 - s eta)^2 (eta >= 0), rho0 c0^2 eta (eta < 0)
       e_ref = p_ref eta/(2 rho0)

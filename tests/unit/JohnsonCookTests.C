@@ -34,7 +34,7 @@ using namespace unitTestTools;
 namespace
 {
 
-// OFHC copper: Johnson & Cook 1983 (docs MATERIALS.md section 3), shear
+// OFHC copper: Johnson & Cook 1983 (docs/model.md section 10.3), shear
 // modulus 46 GPa, stiffened gas of the tutorials with Cv 383 J/(kg K)
 const std::string copperJC
 (

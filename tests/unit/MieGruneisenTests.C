@@ -1,11 +1,11 @@
 /*---------------------------------------------------------------------------*\
   Unit tests of the Mie-Grueneisen equation of state (docs/model.md section
-  10.1, docs/validation.md): the facts of the design page MATERIALS.md
-  section 1 (continuity at eta = 0 with c^2(rho0, 0) = c0^2, the model's own
-  Hugoniot from rest is Us = c0 + s up, round trips, Gamma = rho0 Gamma0/rho,
-  the temperature), the admissible range (rhoMax, pMin), the closed-form
-  helpers against the generic ones, and the generic relaxation services
-  against their direct definitions.
+  10.1, docs/validation.md): the facts of that section (continuity at
+  eta = 0 with c^2(rho0, 0) = c0^2, the model's own Hugoniot from rest is
+  Us = c0 + s up, round trips, Gamma = rho0 Gamma0/rho, the temperature),
+  the admissible range (rhoMax, pMin), the closed-form helpers against the
+  generic ones, and the generic relaxation services against their direct
+  definitions.
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>
@@ -24,7 +24,7 @@ using namespace unitTestTools;
 namespace
 {
 
-// Copper of MATERIALS.md (Steinberg's data) and of V11
+// Copper of docs/materials.md (OFHCcopper, Steinberg's data) and of V11
 const scalar rho0 = 8930, c0 = 3940, s = 1.489, Gamma0 = 2.02;
 const scalar Cv = 383, T0 = 298;
 const scalar K = rho0*c0*c0;

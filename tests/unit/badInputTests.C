@@ -589,8 +589,9 @@ TEST(badInput, JohnsonCookYieldStress)
 
 TEST(badInput, MieGruneisen)
 {
-    // The MieGruneisen keywords of MATERIALS.md: each one missing, zero or
-    // negative stops with a FatalIOError naming the phase and the entry
+    // The MieGruneisen keywords of docs/model.md section 10.1: each one
+    // missing, zero or negative stops with a FatalIOError naming the phase
+    // and the entry
     const std::vector<std::pair<std::string, std::string>> entries
     {
         {"rho0", "8930"}, {"c0", "3939"}, {"s", "1.5"}, {"Gamma0", "2"},
