@@ -14,23 +14,10 @@ Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
     rhoRef_(nPhases_),
     rhoCompressed_(nPhases_),
     rhoVacuum_(nPhases_, 0),
-    m_(nPhases_),
-    v0_(nPhases_),
-    eh0_(nPhases_),
-    alpha_(nPhases_),
-    ee_(nPhases_, 0),
-    trace_(nPhases_),
-    isentropic_(nPhases_, false),
-    failed_(nPhases_, false),
-    held_(nPhases_, false),
-    pHeld_(nPhases_, 0),
-    pinned_(nPhases_, false),
-    nVacuum_(0),
-    nUnpaid_(0),
-    unpaidEnergy_(0),
-    err_(),
-    nActive_(0),
-    traceVolume_(0)
+    cell_(nPhases_),
+    pressure_(phases),
+    ledger_(phases.mesh().V()),
+    err_()
 {
     for (label k = 0; k < nPhases_; ++k)
     {
@@ -71,200 +58,18 @@ Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
 }
 
 
-Foam::scalar Foam::mechanicalRelaxation::relaxedVolume
-(
-    const label k,
-    const scalar pStar,
-    scalar& dvdp
-) const
-{
-    const equationOfState& eos = phases_.phase(k).eos();
-    if (isentropic_[k])
-    {
-        // Along the isentrope, held at the cavitation pressure below it
-        const Pair<scalar> s0(isentropeStart(k));
-        const scalar pc = phases_.cavitationPressure(k);
-        dvdp =
-            pStar > pc
-          ? eos.dvIsentropicdp(pStar, s0.first(), s0.second())
-          : 0;
-        return eos.vIsentropic(max(pStar, pc), s0.first(), s0.second());
-    }
-    if (pinned_[k])
-    {
-        // Failing material in tension keeps its own state, down to its
-        // floor: it does not relax toward the fluids of the cell
-        dvdp = 0;
-        return
-            eos.p(1/v0_[k], eh0_[k]) > pHeld_[k]
-          ? v0_[k]
-          : eos.vRelaxed(pHeld_[k], 1/v0_[k], eh0_[k]);
-    }
-    if (held_[k] && pStar < pHeld_[k])
-    {
-        // Damaged material holds no tension below its floor
-        dvdp = 0;
-        return eos.vRelaxed(pHeld_[k], 1/v0_[k], eh0_[k]);
-    }
-    dvdp = eos.dvRelaxeddp(pStar, 1/v0_[k], eh0_[k]);
-    return eos.vRelaxed(pStar, 1/v0_[k], eh0_[k]);
-}
-
-
-Foam::Pair<Foam::scalar> Foam::mechanicalRelaxation::isentropeStart
-(
-    const label k
-) const
-{
-    const Pair<scalar>& ref = phases_.referenceIsentrope(k);
-    return ref.first() > 0 ? ref : Pair<scalar>(1/v0_[k], eh0_[k]);
-}
-
-
-bool Foam::mechanicalRelaxation::interfacePressure
-(
-    const scalar volume,
-    scalar& p
-) const
-{
-    // F(p) = sum m_k v_k(p) - volume decreases from +inf at the largest
-    // of the lowest pressures the phases' paths reach (every active phase
-    // is admissible there) to sum alpha_k (gamma-1)/gamma - volume < 0
-    // (stiffened gases): one root
-    scalar lo = -GREAT;
-    scalar pScale = 0;
-    scalar pGuess = 0, wGuess = 0;
-    for (label k = 0; k < nPhases_; ++k)
-    {
-        if (trace_[k]) continue;
-        const equationOfState& eos = phases_.phase(k).eos();
-        const scalar pk = eos.p(1/v0_[k], eh0_[k]);
-        const Pair<scalar> s0(isentropeStart(k));
-        const scalar pPath =
-            isentropic_[k]
-          ? eos.pIsentropicMin(s0.first(), s0.second())
-          : eos.pRelaxedMin(1/v0_[k], eh0_[k]);
-        const bool held =
-            (isentropic_[k] && phases_.cavitationPressure(k) > pPath)
-         || (held_[k] && pHeld_[k] > pPath);
-        if (!held)
-        {
-            // v_k(p) grows without bound as p -> pPath
-            lo = max(lo, pPath);
-        }
-        pScale = max(pScale, eos.pScale(1/v0_[k], pk));
-        pGuess += alpha_[k]*pk;
-        wGuess += alpha_[k];
-    }
-    scalar hi = GREAT;
-
-    const auto F = [&](const scalar pp, scalar& dF)
-    {
-        scalar f = -volume;
-        dF = 0;
-        for (label k = 0; k < nPhases_; ++k)
-        {
-            if (trace_[k]) continue;
-            scalar dvdp;
-            f += m_[k]*relaxedVolume(k, pp, dvdp);
-            dF += m_[k]*dvdp;
-        }
-        return f;
-    };
-
-    p = pGuess/wGuess;
-    if (!(p > lo)) p = lo + 1e-6*max(pScale, scalar(1));
-
-    // Newton steps that do not shrink (a zigzag about the kink of a fluid
-    // held at its cavitation pressure) give way to bisection
-    scalar stepOld = GREAT;
-    for (int iter = 0; iter < 300; ++iter)
-    {
-        scalar dF;
-        const scalar f = F(p, dF);
-        if (f == 0)
-        {
-            return true;
-        }
-        if (f > 0) lo = p; else hi = p;
-
-        scalar pNew = p - f/dF;
-        const bool stalled = mag(pNew - p) > 0.5*stepOld && hi < GREAT;
-        stepOld = mag(pNew - p);
-        if (!(pNew > lo && pNew < hi) || stalled)
-        {
-            // Bisect, or expand when no upper bound is known yet
-            pNew =
-                (hi < GREAT)
-              ? 0.5*(lo + hi)
-              : p + 2*max(mag(p - lo), scalar(1));
-        }
-        // Converged in p, and in the volume unless p is resolved to
-        // round-off: a nearly empty gas next to failed or cavitating
-        // material takes its volume at p* near 0, where a pressure
-        // tolerance relative to the metal's scale would leave the volume
-        // wrong by percent (and the closing of the volumes would hand
-        // that to the metal as a tension of GPa)
-        if
-        (
-            mag(pNew - p) <= 1e-15*(mag(pNew) + pScale)
-         && (mag(f) <= 1e-12*volume || mag(pNew - p) <= 1e-15*mag(pNew))
-        )
-        {
-            p = pNew;
-            return true;
-        }
-        p = pNew;
-    }
-    return false;
-}
-
-
 void Foam::mechanicalRelaxation::vacuumCap(const label c, const label k)
 {
     const Pair<scalar>& ref = phases_.referenceIsentrope(k);
     const scalar eIs = phases_.phase(k).eos().eIsentropic
     (
-        1/v0_[k], ref.first(), ref.second()
+        1/cell_.v[k], ref.first(), ref.second()
     );
-    if (eh0_[k] > eIs)
+    if (cell_.e[k] > eIs)
     {
-        pay(c, heaviestActive(k), m_[k]*(eIs - eh0_[k]));
-        eh0_[k] = eIs;
-        ++nVacuum_;
-    }
-}
-
-
-Foam::label Foam::mechanicalRelaxation::heaviestActive(const label k) const
-{
-    label heaviest = -1;
-    for (label j = 0; j < nPhases_; ++j)
-    {
-        if (j != k && !trace_[j] && (heaviest < 0 || m_[j] > m_[heaviest]))
-        {
-            heaviest = j;
-        }
-    }
-    return heaviest;
-}
-
-
-void Foam::mechanicalRelaxation::pay
-(
-    const label c,
-    const label payer,
-    const scalar dE
-)
-{
-    if (payer >= 0)
-    {
-        eh0_[payer] -= dE/m_[payer];
-    }
-    else
-    {
-        unpaidEnergy_ += dE*phases_.mesh().V()[c];
-        ++nUnpaid_;
+        ledger_.pay(cell_, c, cell_.heaviestActive(k), cell_.m[k]*(eIs - cell_.e[k]));
+        cell_.e[k] = eIs;
+        ledger_.countVacuum();
     }
 }
 
@@ -279,7 +84,7 @@ bool Foam::mechanicalRelaxation::vacuumFloor(const label c, const label k)
     // collapse with it). The energy this takes comes from the heaviest
     // other phase that is not a trace, if any
     const equationOfState& eos = phases_.phase(k).eos();
-    const scalar rho = 1/v0_[k];
+    const scalar rho = 1/cell_.v[k];
     const scalar pMin = eos.pMin(rho);
     scalar eFloor = eos.e(rho, pMin + phases_.regimes().pVacuum());
 
@@ -296,98 +101,9 @@ bool Foam::mechanicalRelaxation::vacuumFloor(const label c, const label k)
 
     // Alone (the other phases traces), the fluid's floor adds at most
     // alpha pVacuum/(gamma - 1) per unit volume, counted
-    pay(c, heaviestActive(k), m_[k]*(eFloor - eh0_[k]));
-    eh0_[k] = eFloor;
-    ++nVacuum_;
-    return true;
-}
-
-
-bool Foam::mechanicalRelaxation::relaxPressure
-(
-    const label c,
-    conservedState& q,
-    const scalar traceVolume,
-    scalar& pStar
-)
-{
-    // Fluids on their isentrope, when a phase on the default path
-    // (the heaviest such, the payer) takes the energy difference and
-    // outweighs them
-    label payer = -1;
-    for (label k = 0; k < nPhases_; ++k)
-    {
-        if
-        (
-            !trace_[k] && !phases_.isentropicRelaxation(k)
-         && (payer < 0 || m_[k] > m_[payer])
-        )
-        {
-            payer = k;
-        }
-    }
-    // The payer must outweigh the fluids it pays for: where the fluid is
-    // the heavier (air with a few metal fragments) the energy difference
-    // would overheat or freeze the light payer, and the default path is
-    // used
-    scalar mIsentropic = 0;
-    for (label k = 0; k < nPhases_; ++k)
-    {
-        if (!trace_[k] && phases_.isentropicRelaxation(k))
-        {
-            mIsentropic += m_[k];
-        }
-    }
-    const bool useIsentropes = payer >= 0 && m_[payer] > mIsentropic;
-    for (label k = 0; k < nPhases_; ++k)
-    {
-        isentropic_[k] =
-            useIsentropes && !trace_[k]
-         && phases_.isentropicRelaxation(k);
-    }
-
-    if (!interfacePressure(1 - traceVolume, pStar))
-    {
-        return false;
-    }
-
-    scalar sumActive = 0;
-    for (label k = 0; k < nPhases_; ++k)
-    {
-        if (trace_[k]) continue;
-        scalar dvdp;
-        alpha_[k] = m_[k]*relaxedVolume(k, pStar, dvdp);
-        sumActive += alpha_[k];
-    }
-    scalar toPayer = 0;
-    for (label k = 0; k < nPhases_; ++k)
-    {
-        if (trace_[k]) continue;
-        alpha_[k] *= (1 - traceVolume)/sumActive;
-        const scalar v = alpha_[k]/m_[k];
-        const scalar eConstantP = eh0_[k] - pStar*(v - v0_[k]);
-        if (isentropic_[k])
-        {
-            eh0_[k] = phases_.phase(k).eos().e
-            (
-                1/v, max(pStar, phases_.cavitationPressure(k))
-            );
-            toPayer += m_[k]*(eConstantP - eh0_[k]);
-        }
-        else
-        {
-            eh0_[k] = eConstantP;
-        }
-        if (phases_.phase(k).solid())
-        {
-            q.A[k][c] *= std::cbrt(v0_[k]/v);
-        }
-        v0_[k] = v;
-    }
-    if (payer >= 0)
-    {
-        eh0_[payer] += toPayer/m_[payer];
-    }
+    ledger_.pay(cell_, c, cell_.heaviestActive(k), cell_.m[k]*(eFloor - cell_.e[k]));
+    cell_.e[k] = eFloor;
+    ledger_.countVacuum();
     return true;
 }
 
@@ -450,8 +166,8 @@ Foam::scalar Foam::mechanicalRelaxation::collectMasses
     scalar mass = 0;
     for (label k = 0; k < nPhases_; ++k)
     {
-        alpha_[k] = q.alpha[k][c];
-        trace_[k] = regimes.trace(alpha_[k]);
+        cell_.alpha[k] = q.alpha[k][c];
+        cell_.trace[k] = regimes.trace(cell_.alpha[k]);
 
         if (!(q.mass[k][c] > 0))
         {
@@ -465,7 +181,7 @@ Foam::scalar Foam::mechanicalRelaxation::collectMasses
             (
                 !regimes.negligible
                 (
-                    alpha_[k], phases_.alpha(k)[c]*phases_.rho(k)[c], oldMix
+                    cell_.alpha[k], phases_.alpha(k)[c]*phases_.rho(k)[c], oldMix
                 )
             )
             {
@@ -474,10 +190,10 @@ Foam::scalar Foam::mechanicalRelaxation::collectMasses
             // A minor phase that lost all its mass keeps its last
             // density (the mass this adds is below alphaMinor rho, or
             // massFractionMinor of the cell's mass)
-            q.mass[k][c] = alpha_[k]*phases_.rho(k)[c];
+            q.mass[k][c] = cell_.alpha[k]*phases_.rho(k)[c];
         }
-        m_[k] = q.mass[k][c];
-        mass += m_[k];
+        cell_.m[k] = q.mass[k][c];
+        mass += cell_.m[k];
         mom += q.momentum[k][c];
     }
 
@@ -514,7 +230,7 @@ Foam::scalar Foam::mechanicalRelaxation::collectMasses
             if
             (
                 phases_.phase(k).solid()
-             && (kSolid < 0 || alpha_[k] > alpha_[kSolid])
+             && (kSolid < 0 || cell_.alpha[k] > cell_.alpha[kSolid])
             )
             {
                 kSolid = k;
@@ -524,7 +240,7 @@ Foam::scalar Foam::mechanicalRelaxation::collectMasses
         {
             alphaGasTrace = regimes.gasTraceAlpha
             (
-                alpha_[kSolid], m_[kSolid], phases_.phase(kSolid).rho0()
+                cell_.alpha[kSolid], cell_.m[kSolid], phases_.phase(kSolid).rho0()
             );
         }
     }
@@ -535,23 +251,23 @@ Foam::scalar Foam::mechanicalRelaxation::collectMasses
         (
             phases_.referenceIsentrope(k).first() > 0
          && (
-                regimes.lightGas(m_[k], mass)
-             || alpha_[k] < alphaGasTrace
+                regimes.lightGas(cell_.m[k], mass)
+             || cell_.alpha[k] < alphaGasTrace
             )
         )
         {
-            trace_[k] = true;
+            cell_.trace[k] = true;
         }
 
         // A minor metal pressed beyond rhoCompressed_ is a trace, and
         // relaxTraces gives it its reference density
         if
         (
-            regimes.thin(alpha_[k])
-         && !(m_[k] < rhoCompressed_[k]*alpha_[k])
+            regimes.thin(cell_.alpha[k])
+         && !(cell_.m[k] < rhoCompressed_[k]*cell_.alpha[k])
         )
         {
-            trace_[k] = true;
+            cell_.trace[k] = true;
         }
     }
     return mass;
@@ -567,7 +283,7 @@ void Foam::mechanicalRelaxation::compactMetals
     for (label k = 0; k < nPhases_; ++k)
     {
         const scalar rhoRef = rhoRef_[k];
-        if (k == main || !(rhoRef > 0) || !(m_[k] < 0.5*rhoRef*alpha_[k]))
+        if (k == main || !(rhoRef > 0) || !(cell_.m[k] < 0.5*rhoRef*cell_.alpha[k]))
         {
             continue;
         }
@@ -581,9 +297,9 @@ void Foam::mechanicalRelaxation::compactMetals
         // metal takes its reference density at its specific energy, the
         // volume going to the cell's largest phase: only volumes change,
         // the energy is conserved
-        const scalar dAlpha = m_[k]/rhoRef - alpha_[k];
-        alpha_[k] += dAlpha;
-        alpha_[main] -= dAlpha;
+        const scalar dAlpha = cell_.m[k]/rhoRef - cell_.alpha[k];
+        cell_.alpha[k] += dAlpha;
+        cell_.alpha[main] -= dAlpha;
     }
 }
 
@@ -598,14 +314,14 @@ void Foam::mechanicalRelaxation::relaxVelocity
     for (label k = 0; k < nPhases_; ++k)
     {
         const hyperelasticPhase& ph = phases_.phase(k);
-        v0_[k] = alpha_[k]/m_[k];
+        cell_.v[k] = cell_.alpha[k]/cell_.m[k];
         cobasis::matrix& A = q.A[k][c];
 
         // A solid trace is reset unstrained by relaxTraces, which pays the
         // change of its whole energy: its cobasis is not made compatible
         // and no elastic energy is split off here (the same payment up to
         // round-off)
-        const bool reset = ph.solid() && trace_[k];
+        const bool reset = ph.solid() && cell_.trace[k];
         if (ph.solid() && !reset)
         {
             const scalar detA = A.determinant();
@@ -613,24 +329,24 @@ void Foam::mechanicalRelaxation::relaxVelocity
             {
                 // A minor solid's cobasis that the transport inverted is
                 // reset (its elastic energy, if any, becomes heat)
-                if (!trace_[k] && !phases_.regimes().thin(alpha_[k]))
+                if (!cell_.trace[k] && !phases_.regimes().thin(cell_.alpha[k]))
                 {
                     fail(c, k, "det(A)", detA);
                 }
-                A = cobasis::unstrained(1/v0_[k], ph.rho0());
+                A = cobasis::unstrained(1/cell_.v[k], ph.rho0());
             }
             else
             {
-                A *= std::cbrt(1/(v0_[k]*ph.rho0()*detA));
+                A *= std::cbrt(1/(cell_.v[k]*ph.rho0()*detA));
             }
         }
         // Own kinetic energy out, the share of the dissipated kinetic
         // energy 1/2 |u_k - u|^2 in: e_k never decreases
-        const cobasis::vector uk(q.momentum[k][c]/m_[k]);
-        ee_[k] = reset ? 0 : ph.elasticEnergy(A);
-        eh0_[k] =
-            q.energy[k][c]/m_[k] - 0.5*uk.squaredNorm()
-          + 0.5*(uk - u).squaredNorm() - ee_[k];
+        const cobasis::vector uk(q.momentum[k][c]/cell_.m[k]);
+        cell_.ee[k] = reset ? 0 : ph.elasticEnergy(A);
+        cell_.e[k] =
+            q.energy[k][c]/cell_.m[k] - 0.5*uk.squaredNorm()
+          + 0.5*(uk - u).squaredNorm() - cell_.ee[k];
     }
 }
 
@@ -643,24 +359,24 @@ void Foam::mechanicalRelaxation::screenEnergies
 {
     for (label k = 0; k < nPhases_; ++k)
     {
-        if (trace_[k]) continue;
+        if (cell_.trace[k]) continue;
         const equationOfState& eos = phases_.phase(k).eos();
-        if (!(1/v0_[k] < eos.rhoMax()))
+        if (!(1/cell_.v[k] < eos.rhoMax()))
         {
             // Beyond the highest density of the equation of state (the
             // pole of a Mie-Grueneisen Hugoniot) there is no pressure
-            fail(c, k, "rho>=rhoMax", 1/v0_[k]);
+            fail(c, k, "rho>=rhoMax", 1/cell_.v[k]);
             continue;
         }
-        const scalar pk = eos.p(1/v0_[k], eh0_[k]);
-        if (!(pk > eos.pMin(1/v0_[k])))
+        const scalar pk = eos.p(1/cell_.v[k], cell_.e[k]);
+        if (!(pk > eos.pMin(1/cell_.v[k])))
         {
             if
             (
-                phases_.regimes().negligible(alpha_[k], m_[k], mass)
+                phases_.regimes().negligible(cell_.alpha[k], cell_.m[k], mass)
             )
             {
-                trace_[k] = true;
+                cell_.trace[k] = true;
             }
             else if
             (
@@ -673,7 +389,7 @@ void Foam::mechanicalRelaxation::screenEnergies
                 fail(c, k, "p", pk);
             }
         }
-        else if (1/v0_[k] < rhoVacuum_[k])
+        else if (1/cell_.v[k] < rhoVacuum_[k])
         {
             vacuumCap(c, k);
         }
@@ -689,17 +405,17 @@ bool Foam::mechanicalRelaxation::relaxPressures
     scalar& pStar
 )
 {
-    nActive_ = 0;
-    traceVolume_ = 0;
+    cell_.nActive = 0;
+    cell_.traceVolume = 0;
     for (label k = 0; k < nPhases_; ++k)
     {
-        if (trace_[k]) traceVolume_ += alpha_[k];
-        else ++nActive_;
+        if (cell_.trace[k]) cell_.traceVolume += cell_.alpha[k];
+        else ++cell_.nActive;
     }
 
-    if (nActive_ > 1)
+    if (cell_.nActive > 1)
     {
-        if (!relaxPressure(c, q, traceVolume_, pStar))
+        if (!pressure_.relax(cell_, q, c, pStar))
         {
             fail(c, main, "interface pressure (no convergence)", pStar);
             return false;
@@ -707,7 +423,7 @@ bool Foam::mechanicalRelaxation::relaxPressures
     }
     else
     {
-        pStar = phases_.phase(main).eos().p(1/v0_[main], eh0_[main]);
+        pStar = phases_.phase(main).eos().p(1/cell_.v[main], cell_.e[main]);
     }
     return true;
 }
@@ -723,16 +439,16 @@ void Foam::mechanicalRelaxation::relaxTraces
 {
     // The energy a trace's reset takes or gives is paid by the heaviest
     // phase that is not a trace (the cell's largest by volume if none)
-    label payer = heaviestActive(-1);
+    label payer = cell_.heaviestActive(-1);
     if (payer < 0) payer = main;
 
     for (label k = 0; k < nPhases_; ++k)
     {
-        if (!trace_[k]) continue;
+        if (!cell_.trace[k]) continue;
         const hyperelasticPhase& ph = phases_.phase(k);
         const equationOfState& eos = ph.eos();
         const scalar rhoRef = rhoRef_[k];
-        const scalar rhoTrace = 1/v0_[k];
+        const scalar rhoTrace = 1/cell_.v[k];
         if (k != main && !(rhoTrace < rhoCompressed_[k]))
         {
             // A trace that the transport left beyond rhoCompressed_ takes
@@ -740,13 +456,13 @@ void Foam::mechanicalRelaxation::relaxTraces
             // volume exchanged with the cell's largest phase (below half
             // the reference density it was compacted, compactMetals)
             const scalar rhoNew = rhoRef > 0 ? rhoRef : 0.5*eos.rhoMax();
-            const scalar dAlpha = m_[k]/rhoNew - alpha_[k];
-            alpha_[k] += dAlpha;
-            alpha_[main] -= dAlpha;
-            v0_[k] = alpha_[k]/m_[k];
-            v0_[main] = alpha_[main]/m_[main];
+            const scalar dAlpha = cell_.m[k]/rhoNew - cell_.alpha[k];
+            cell_.alpha[k] += dAlpha;
+            cell_.alpha[main] -= dAlpha;
+            cell_.v[k] = cell_.alpha[k]/cell_.m[k];
+            cell_.v[main] = cell_.alpha[main]/cell_.m[main];
         }
-        const scalar rho = 1/v0_[k];
+        const scalar rho = 1/cell_.v[k];
         if (!(rho < ph.eos().rhoMax()))
         {
             // No state to be reset to
@@ -756,7 +472,7 @@ void Foam::mechanicalRelaxation::relaxTraces
         scalar pk = max(pStar, ph.eos().pMin(rho) + 1);
         // The elastic energy relaxVelocity split off (its A is unchanged
         // since)
-        const scalar eeOld = ee_[k];
+        const scalar eeOld = cell_.ee[k];
         if (ph.solid())
         {
             q.A[k][c] = cobasis::unstrained(rho, ph.rho0());
@@ -775,13 +491,14 @@ void Foam::mechanicalRelaxation::relaxTraces
         // without a payer: handing its energy change to a lighter phase
         // would heat that phase by the ratio of the masses (a gas at 1e11
         // Pa, the time step collapsing)
-        pay
+        ledger_.pay
         (
+            cell_,
             c,
-            m_[k] < m_[payer] ? payer : -1,
-            m_[k]*(eNew - eh0_[k] - eeOld)
+            cell_.m[k] < cell_.m[payer] ? payer : -1,
+            cell_.m[k]*(eNew - cell_.e[k] - eeOld)
         );
-        eh0_[k] = eNew;
+        cell_.e[k] = eNew;
     }
 }
 
@@ -802,7 +519,7 @@ bool Foam::mechanicalRelaxation::relaxPlastic
         {
             phase.carried(i)[c] = q.carried[k][i][c];
         }
-        if (ph.solid() && !trace_[k] && !failed_[k])
+        if (ph.solid() && !cell_.trace[k] && !cell_.failed[k])
         {
             // The plastic return, its heat and the damage it does
             // (inelasticModel), on the phase's fields of this cell
@@ -811,7 +528,7 @@ bool Foam::mechanicalRelaxation::relaxPlastic
             scalar carried[phaseModel::maxCarried];
             phase.inelasticState(c, carried);
             const scalar heat =
-                inelastic.relax(q.A[k][c], carried, 1/v0_[k], eh0_[k], dt);
+                inelastic.relax(q.A[k][c], carried, 1/cell_.v[k], cell_.e[k], dt);
             for (label i = 0; i < nI; ++i)
             {
                 phase.carried(i)[c] = carried[i];
@@ -820,9 +537,9 @@ bool Foam::mechanicalRelaxation::relaxPlastic
             if (inelastic.failed(carried))
             {
                 removeShear(c, q, k);
-                failed_[k] = true;
-                held_[k] = true;
-                pHeld_[k] = inelastic.pFloor(carried);
+                cell_.failed[k] = true;
+                cell_.held[k] = true;
+                cell_.pHeld[k] = inelastic.pFloor(carried);
                 heated = true;
             }
         }
@@ -838,10 +555,10 @@ void Foam::mechanicalRelaxation::vacuumAfterRelaxation(const label c)
         const equationOfState& eos = phases_.phase(k).eos();
         if
         (
-            phases_.regimes().vacuumFloor() && !trace_[k]
+            phases_.regimes().vacuumFloor() && !cell_.trace[k]
          && !phases_.phase(k).solid()
-         && 1/v0_[k] < eos.rhoMax()
-         && !(eos.p(1/v0_[k], eh0_[k]) > eos.pMin(1/v0_[k]))
+         && 1/cell_.v[k] < eos.rhoMax()
+         && !(eos.p(1/cell_.v[k], cell_.e[k]) > eos.pMin(1/cell_.v[k]))
         )
         {
             vacuumFloor(c, k);
@@ -863,7 +580,7 @@ void Foam::mechanicalRelaxation::checkAndStore
         const hyperelasticPhase& ph = phases_.phase(k);
         const cobasis::matrix& A = q.A[k][c];
 
-        const scalar rho = 1/v0_[k];
+        const scalar rho = 1/cell_.v[k];
 
         // No pressure outside the density range (a Mie-Grueneisen phase
         // beyond rhoMax gives NaN, and comparing a NaN traps under
@@ -872,9 +589,9 @@ void Foam::mechanicalRelaxation::checkAndStore
         // already failed (relaxTraces)
         const bool inRange = rho > 0 && rho < ph.eos().rhoMax();
         const scalar p =
-            inRange ? ph.eos().p(rho, eh0_[k]) : phases_.p(k)[c];
+            inRange ? ph.eos().p(rho, cell_.e[k]) : phases_.p(k)[c];
 
-        if (!trace_[k])
+        if (!cell_.trace[k])
         {
             if (!(rho > 0)) fail(c, k, "rho", rho);
             if (!(rho < ph.eos().rhoMax())) fail(c, k, "rho>=rhoMax", rho);
@@ -882,14 +599,14 @@ void Foam::mechanicalRelaxation::checkAndStore
             {
                 fail(c, k, "p", p);
             }
-            if (!(alpha_[k] <= 1)) fail(c, k, "alpha", alpha_[k]);
+            if (!(cell_.alpha[k] <= 1)) fail(c, k, "alpha", cell_.alpha[k]);
             if (ph.solid() && !(A.determinant() > 0))
             {
                 fail(c, k, "det(A)", A.determinant());
             }
         }
 
-        phases_.alpha(k)[c] = alpha_[k];
+        phases_.alpha(k)[c] = cell_.alpha[k];
         phases_.rho(k)[c] = rho;
         phases_.p(k)[c] = p;
         phases_.A(k)[c] = toTensor(A);
@@ -907,9 +624,7 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
 {
     err_ = stateError();
     badCells_.clear();
-    nVacuum_ = 0;
-    nUnpaid_ = 0;
-    unpaidEnergy_ = 0;
+    ledger_.reset();
 
     const label nCells = phases_.mesh().nCells();
     for (label c = 0; c < nCells; ++c)
@@ -953,9 +668,9 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
         //    would push the heat into its neighbours (a light gas next to
         //    a yielding metal took it all and reached 1e5 K)
         const bool heated = relaxPlastic(c, q, dt);
-        if (heated && nActive_ > 1)
+        if (heated && cell_.nActive > 1)
         {
-            if (!relaxPressure(c, q, traceVolume_, pStar))
+            if (!pressure_.relax(cell_, q, c, pStar))
             {
                 fail(c, main, "interface pressure (no convergence)", pStar);
                 continue;

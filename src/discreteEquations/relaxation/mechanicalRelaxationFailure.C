@@ -12,8 +12,8 @@ void Foam::mechanicalRelaxation::removeShear
     const hyperelasticPhase& ph = phases_.phase(k);
     cobasis::matrix& A = q.A[k][c];
     const scalar shearEnergy = ph.elasticEnergy(A);
-    A = cobasis::unstrained(1/v0_[k], ph.rho0());
-    eh0_[k] += shearEnergy;
+    A = cobasis::unstrained(1/cell_.v[k], ph.rho0());
+    cell_.e[k] += shearEnergy;
 }
 
 
@@ -29,10 +29,10 @@ void Foam::mechanicalRelaxation::relaxFailed
     {
         const phaseModel& phase = phases_[k];
         const inelasticModel& inelastic = phase.inelastic();
-        failed_[k] = false;
-        held_[k] = false;
-        pinned_[k] = false;
-        if (!inelastic.limitsTension() || trace_[k])
+        cell_.failed[k] = false;
+        cell_.held[k] = false;
+        cell_.pinned[k] = false;
+        if (!inelastic.limitsTension() || cell_.trace[k])
         {
             // A trace's state is the cell's business (relaxTraces)
             continue;
@@ -45,7 +45,7 @@ void Foam::mechanicalRelaxation::relaxFailed
         {
             carried[i] = q.carried[k][i][c];
         }
-        const scalar pk = phase.eos().p(1/v0_[k], eh0_[k]);
+        const scalar pk = phase.eos().p(1/cell_.v[k], cell_.e[k]);
         const scalar floor = inelastic.tension(carried, pk, dt);
         for (label i = 0; i < nI; ++i)
         {
@@ -55,26 +55,26 @@ void Foam::mechanicalRelaxation::relaxFailed
         {
             continue;
         }
-        held_[k] = true;
-        pHeld_[k] = floor;
+        cell_.held[k] = true;
+        cell_.pHeld[k] = floor;
 
         const bool failed = inelastic.failed(carried);
         if (failed)
         {
             // No deviatoric stress: the shear energy becomes heat
-            failed_[k] = true;
+            cell_.failed[k] = true;
             removeShear(c, q, k);
         }
 
         // Failing (over spallTime) and in tension, it holds its own state
         // down to -sigmaSpall: fluids that the opening let into the cell
         // take no tension from it before it has failed
-        pinned_[k] = !failed && pk < 0;
+        cell_.pinned[k] = !failed && pk < 0;
 
         // In tension below its floor (the whole solid, or a trace of it
         // next to a fluid) it opens up: the fluids of the cell take the
         // volume
-        open = open || pk < floor || pinned_[k];
+        open = open || pk < floor || cell_.pinned[k];
     }
     if (!open)
     {
@@ -88,23 +88,23 @@ void Foam::mechanicalRelaxation::relaxFailed
     bool fluid = false;
     for (label k = 0; k < nPhases_; ++k)
     {
-        if (phases_.phase(k).solid() || !(m_[k] > 0) || !trace_[k])
+        if (phases_.phase(k).solid() || !(cell_.m[k] > 0) || !cell_.trace[k])
         {
-            fluid = fluid || (!phases_.phase(k).solid() && !trace_[k]);
+            fluid = fluid || (!phases_.phase(k).solid() && !cell_.trace[k]);
             continue;
         }
         const equationOfState& eos = phases_.phase(k).eos();
-        const scalar rho = 1/v0_[k];
-        if (!(eos.p(rho, eh0_[k]) > eos.pMin(rho)))
+        const scalar rho = 1/cell_.v[k];
+        if (!(eos.p(rho, cell_.e[k]) > eos.pMin(rho)))
         {
             if (!phases_.regimes().vacuumFloor())
             {
                 continue;
             }
-            trace_[k] = false;
+            cell_.trace[k] = false;
             vacuumFloor(c, k);
         }
-        trace_[k] = false;
+        cell_.trace[k] = false;
         fluid = true;
     }
     if (!fluid)
@@ -113,8 +113,8 @@ void Foam::mechanicalRelaxation::relaxFailed
         // tension (a case without a fluid phase)
         for (label k = 0; k < nPhases_; ++k)
         {
-            held_[k] = false;
-            pinned_[k] = false;
+            cell_.held[k] = false;
+            cell_.pinned[k] = false;
         }
     }
 }
