@@ -3,65 +3,6 @@
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::phaseModel::readRelaxationPath(const dictionary& dict)
-{
-    const word& name = law_.name();
-    const equationOfState& eos = law_.eos();
-
-    enum class relaxationPath { constantPressure, isentropic };
-    static const Enum<relaxationPath> names
-    ({
-        {relaxationPath::constantPressure, "constantPressure"},
-        {relaxationPath::isentropic, "isentropic"}
-    });
-    isentropicRelaxation_ =
-        readOption
-        (
-            dict, "pressureRelaxation", names,
-            relaxationPath::constantPressure, "Phase " + name
-        )
-     == relaxationPath::isentropic;
-    if (isentropicRelaxation_ && law_.solid())
-    {
-        FatalIOErrorInFunction(dict)
-            << "Phase " << name << ": pressureRelaxation isentropic is"
-            << " for fluids only" << exit(FatalIOError);
-    }
-
-    if (dict.found("cavitationPressure"))
-    {
-        pCavitation_ = dict.get<scalar>("cavitationPressure");
-        // Held there, the fluid may expand to a vanishing density
-        if (!isentropicRelaxation_ || !(pCavitation_ > eos.pMin(SMALL)))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Phase " << name << ": cavitationPressure "
-                << pCavitation_ << " needs pressureRelaxation"
-                << " isentropic and a value above "
-                << eos.pMin(SMALL) << exit(FatalIOError);
-        }
-    }
-    if (dict.found("referenceIsentrope"))
-    {
-        const Pair<scalar> ref(dict.get<Pair<scalar>>("referenceIsentrope"));
-        if
-        (
-            !isentropicRelaxation_
-         || !eos.admissible(ref.first(), ref.second())
-        )
-        {
-            FatalIOErrorInFunction(dict)
-                << "Phase " << name << ": referenceIsentrope " << ref
-                << " needs pressureRelaxation isentropic, 0 < rho < "
-                << eos.rhoMax() << " and p > " << eos.pMin(ref.first())
-                << exit(FatalIOError);
-        }
-        isentrope_ =
-            Pair<scalar>(ref.first(), eos.e(ref.first(), ref.second()));
-    }
-}
-
-
 void Foam::phaseModel::initCobasis(const bool readA)
 {
     tensorField& A = A_->primitiveFieldRef();
@@ -146,9 +87,6 @@ Foam::phaseModel::phaseModel
 :
     index_(index),
     law_(name, dict),
-    isentropicRelaxation_(false),
-    isentrope_(-1, 0),
-    pCavitation_(-GREAT),
     alpha_
     (
         IOobject
@@ -178,7 +116,7 @@ Foam::phaseModel::phaseModel
     const fvMesh& mesh = pMixture.mesh();
     const word timeName(mesh.time().timeName());
 
-    readRelaxationPath(dict);
+    relaxationPath_ = pressureRelaxationPath::New(law_, dict);
 
     // Stops on a model that needs a temperature the equation of state
     // does not give

@@ -25,14 +25,12 @@ Foam::scalar Foam::interfacePressure::relaxedVolume
     const equationOfState& eos = phases_.phase(k).eos();
     if (cell.isentropic[k])
     {
-        // Along the isentrope, held at the cavitation pressure below it
-        const Pair<scalar> s0(isentropeStart(cell, k));
-        const scalar pc = phases_.cavitationPressure(k);
-        dvdp =
-            pStar > pc
-          ? eos.dvIsentropicdp(pStar, s0.first(), s0.second())
-          : 0;
-        return eos.vIsentropic(max(pStar, pc), s0.first(), s0.second());
+        // Along its own path (an isentrope, held at the cavitation
+        // pressure below it)
+        return phases_.relaxationPath(k).v
+        (
+            pStar, 1/cell.v[k], cell.e[k], dvdp
+        );
     }
     if (cell.pinned[k])
     {
@@ -54,16 +52,6 @@ Foam::scalar Foam::interfacePressure::relaxedVolume
     return eos.vRelaxed(pStar, 1/cell.v[k], cell.e[k]);
 }
 
-Foam::Pair<Foam::scalar> Foam::interfacePressure::isentropeStart
-(
-    const relaxationCell& cell,
-    const label k
-) const
-{
-    const Pair<scalar>& ref = phases_.referenceIsentrope(k);
-    return ref.first() > 0 ? ref : Pair<scalar>(1/cell.v[k], cell.e[k]);
-}
-
 bool Foam::interfacePressure::solve
 (
     const relaxationCell& cell,
@@ -83,13 +71,13 @@ bool Foam::interfacePressure::solve
         if (cell.trace[k]) continue;
         const equationOfState& eos = phases_.phase(k).eos();
         const scalar pk = eos.p(1/cell.v[k], cell.e[k]);
-        const Pair<scalar> s0(isentropeStart(cell, k));
+        const pressureRelaxationPath& path = phases_.relaxationPath(k);
         const scalar pPath =
             cell.isentropic[k]
-          ? eos.pIsentropicMin(s0.first(), s0.second())
+          ? path.pLowest(1/cell.v[k], cell.e[k])
           : eos.pRelaxedMin(1/cell.v[k], cell.e[k]);
         const bool held =
-            (cell.isentropic[k] && phases_.cavitationPressure(k) > pPath)
+            (cell.isentropic[k] && path.cavitationPressure() > pPath)
          || (cell.held[k] && cell.pHeld[k] > pPath);
         if (!held)
         {
@@ -179,7 +167,7 @@ bool Foam::interfacePressure::relax
     {
         if
         (
-            !cell.trace[k] && !phases_.isentropicRelaxation(k)
+            !cell.trace[k] && !phases_.relaxationPath(k).needsPayer()
          && (payer < 0 || cell.m[k] > cell.m[payer])
         )
         {
@@ -193,7 +181,7 @@ bool Foam::interfacePressure::relax
     scalar mIsentropic = 0;
     for (label k = 0; k < cell.size(); ++k)
     {
-        if (!cell.trace[k] && phases_.isentropicRelaxation(k))
+        if (!cell.trace[k] && phases_.relaxationPath(k).needsPayer())
         {
             mIsentropic += cell.m[k];
         }
@@ -203,7 +191,7 @@ bool Foam::interfacePressure::relax
     {
         cell.isentropic[k] =
             useIsentropes && !cell.trace[k]
-         && phases_.isentropicRelaxation(k);
+         && phases_.relaxationPath(k).needsPayer();
     }
 
     if (!solve(cell, 1 - cell.traceVolume, pStar))
@@ -228,10 +216,7 @@ bool Foam::interfacePressure::relax
         const scalar eConstantP = cell.e[k] - pStar*(v - cell.v[k]);
         if (cell.isentropic[k])
         {
-            cell.e[k] = phases_.phase(k).eos().e
-            (
-                1/v, max(pStar, phases_.cavitationPressure(k))
-            );
+            cell.e[k] = phases_.relaxationPath(k).e(v, pStar, eConstantP);
             toPayer += cell.m[k]*(eConstantP - cell.e[k]);
         }
         else

@@ -1,0 +1,56 @@
+/*---------------------------------------------------------------------------*\
+  impactFoam: Eulerian multiphase elastic-plastic impact solver for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "pressureRelaxationPath.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(pressureRelaxationPath, 0);
+    defineRunTimeSelectionTable(pressureRelaxationPath, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::pressureRelaxationPath::pressureRelaxationPath
+(
+    const hyperelasticPhase& law
+)
+:
+    eos_(law.eos()),
+    isentrope_(-1, 0),
+    pCavitation_(-GREAT)
+{}
+
+
+// * * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::pressureRelaxationPath> Foam::pressureRelaxationPath::New
+(
+    const hyperelasticPhase& law,
+    const dictionary& phaseDict
+)
+{
+    const word pathType
+    (
+        phaseDict.getOrDefault<word>("pressureRelaxation", "constantPressure")
+    );
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(pathType);
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInFunction(phaseDict)
+            << "Phase " << law.name() << ": unknown pressureRelaxation "
+            << pathType << "; valid: (";
+        const wordList valid(dictionaryConstructorTablePtr_->sortedToc());
+        forAll(valid, i)
+        {
+            FatalIOError << (i ? " " : "") << valid[i];
+        }
+        FatalIOError << ")" << exit(FatalIOError);
+    }
+    return cstrIter()(law, phaseDict);
+}
+
+
+// ************************************************************************* //
