@@ -1,3 +1,12 @@
+/*---------------------------------------------------------------------------*\
+  impactFoam: Eulerian multiphase elastic-plastic impact solver for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    mechanicalRelaxation: the solids' inelastic mechanics in the relaxation
+    (each phase's inelasticModel): the tensile cutoff and failed material
+    before the pressure relaxation, the plastic return after it.
+\*---------------------------------------------------------------------------*/
+
 #include "mechanicalRelaxation.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -117,6 +126,52 @@ void Foam::mechanicalRelaxation::relaxFailed
             cell_.pinned[k] = false;
         }
     }
+}
+
+
+
+bool Foam::mechanicalRelaxation::relaxPlastic
+(
+    const label c,
+    conservedState& q,
+    const scalar dt
+)
+{
+    bool heated = false;
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        phaseModel& phase = phases_[k];
+        const hyperelasticPhase& ph = phase.law();
+        for (label i = 0; i < phase.nCarried(); ++i)
+        {
+            phase.carried(i)[c] = q.carried[k][i][c];
+        }
+        if (ph.solid() && !cell_.trace[k] && !cell_.failed[k])
+        {
+            // The plastic return, its heat and the damage it does
+            // (inelasticModel), on the phase's fields of this cell
+            const inelasticModel& inelastic = phase.inelastic();
+            const label nI = phase.nInelastic();
+            scalar carried[phaseModel::maxCarried];
+            phase.inelasticState(c, carried);
+            const scalar heat =
+                inelastic.relax(q.A[k][c], carried, 1/cell_.v[k], cell_.e[k], dt);
+            for (label i = 0; i < nI; ++i)
+            {
+                phase.carried(i)[c] = carried[i];
+            }
+            heated = heated || heat > 0;
+            if (inelastic.failed(carried))
+            {
+                removeShear(c, q, k);
+                cell_.failed[k] = true;
+                cell_.held[k] = true;
+                cell_.pHeld[k] = inelastic.pFloor(carried);
+                heated = true;
+            }
+        }
+    }
+    return heated;
 }
 
 
