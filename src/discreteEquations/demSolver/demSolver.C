@@ -33,9 +33,6 @@ Foam::demSolver::demSolver
     faceO_(nPhases_),
     faceN_(nPhases_),
     ghost_(nPhases_),
-    wedgeA_(-1),
-    wedgeB_(-1),
-    wedgeQ_(cobasis::matrix::Identity()),
     maxFallbackRounds_(schemeDict.getOrDefault<label>("fallbackRounds", 3)),
     fallbackInterfaces_
     (
@@ -47,7 +44,8 @@ Foam::demSolver::demSolver
     cellSteps_(0),
     faceSteps_(0),
     fallbackCellSteps_(0),
-    fallbackFaceSteps_(0)
+    fallbackFaceSteps_(0),
+    wedges_(mesh_, phases.boundary(), magSf_, schemeDict)
 {
     if (maxFallbackRounds_ < 0)
     {
@@ -65,7 +63,6 @@ Foam::demSolver::demSolver
     }
 
     setOffsets();
-    pairWedgeFaces(schemeDict);
 
     Info<< "Discrete equations: Riemann solver " << assembly_.riemann().type()
         << ", reconstruction ";
@@ -112,116 +109,6 @@ void Foam::demSolver::setOffsets()
               : vector(Cf[facei] - C[fc[i]]);
         }
     }
-}
-
-
-void Foam::demSolver::pairWedgeFaces(const dictionary& schemeDict)
-{
-    const boundaryKinds& kinds = phases_.boundary();
-    labelList wedges;
-    forAll(mesh_.boundary(), patchi)
-    {
-        if (kinds[patchi] == boundaryKinds::kind::wedge)
-        {
-            wedges.append(patchi);
-        }
-    }
-    if (wedges.empty())
-    {
-        return;
-    }
-    if (!schemeDict.getOrDefault<bool>("wedgeImages", true))
-    {
-        Info<< "Wedge faces: each solved (wedgeImages no)" << nl;
-        return;
-    }
-
-    // The second wedge face of every cell is the image of its first under
-    // Q = T_B T_A^T, with the reversed orientation, if the mesh is a
-    // one-cell-thick wedge: two wedge patches, each cell with one face in
-    // each, reconstructed at the same point of the mid-plane (7.2)
-    string reason;
-    labelList image;
-    cobasis::matrix Q(cobasis::matrix::Identity());
-    if (wedges.size() != 2)
-    {
-        reason = "not two wedge patches";
-    }
-    else
-    {
-        const wedgePolyPatch& a =
-            refCast<const wedgePolyPatch>(mesh_.boundaryMesh()[wedges[0]]);
-        const wedgePolyPatch& b =
-            refCast<const wedgePolyPatch>(mesh_.boundaryMesh()[wedges[1]]);
-        Q = toEigen(b.faceT() & a.faceT().T());
-        const vectorField& Sf = mesh_.faceAreas();
-        const vectorField& Cf = mesh_.faceCentres();
-
-        labelList faceB(mesh_.nCells(), -1);
-        const labelUList& cellsB = b.faceCells();
-        forAll(cellsB, i)
-        {
-            if (faceB[cellsB[i]] >= 0)
-            {
-                reason = "a cell with two faces on " + b.name();
-            }
-            faceB[cellsB[i]] = b.start() + i;
-        }
-
-        const labelUList& cellsA = a.faceCells();
-        if (cellsA.size() != cellsB.size())
-        {
-            reason = a.name() + " and " + b.name() + " differ in size";
-        }
-        image.setSize(cellsA.size(), -1);
-        forAll(cellsA, i)
-        {
-            if (!reason.empty()) break;
-
-            const label fa = a.start() + i;
-            const label fb = faceB[cellsA[i]];
-            if (fb < 0)
-            {
-                reason = "a cell without a face on " + b.name();
-                break;
-            }
-            const cobasis::vector nA(toEigen(Sf[fa]/magSf_[fa]));
-            const cobasis::vector nB(toEigen(Sf[fb]/magSf_[fb]));
-            const scalar length = sqrt(magSf_[fa]);
-            const vector dImage
-            (
-                (a.faceT().T() & Cf[fa]) - (b.faceT().T() & Cf[fb])
-            );
-            if
-            (
-                (nB + Q*nA).norm() > 1e-9
-             || mag(dImage) > 1e-9*length
-             || mag(magSf_[fb] - magSf_[fa]) > 1e-9*magSf_[fa]
-            )
-            {
-                reason = "faces of a cell not images of each other";
-                break;
-            }
-            image[i] = fb;
-        }
-    }
-
-    // The same choice on every processor
-    if (!returnReduce(reason.empty(), andOp<bool>()))
-    {
-        if (reason.empty())
-        {
-            reason = "not on every processor";
-        }
-        Info<< "Wedge faces: each solved (" << reason << ")" << nl;
-        return;
-    }
-    wedgeA_ = wedges[0];
-    wedgeB_ = wedges[1];
-    wedgeImage_.transfer(image);
-    wedgeQ_ = Q;
-    Info<< "Wedge faces: " << mesh_.boundary()[wedgeB_].name()
-        << " as the image of " << mesh_.boundary()[wedgeA_].name() << nl;
 }
 
 
@@ -285,14 +172,14 @@ void Foam::demSolver::boundaryFaces()
     forAll(mesh_.boundary(), patchi)
     {
         const boundaryKinds::kind kind = kinds[patchi];
-        if (kind == boundaryKinds::kind::empty || patchi == wedgeB_)
+        if (kind == boundaryKinds::kind::empty || wedges_.isImage(patchi))
         {
-            // (wedgeB_'s faces are added as the images of wedgeA_'s)
+            // (an image patch's faces are added with the imaged patch's)
             continue;
         }
         const bool coupled = (kind == boundaryKinds::kind::coupled);
         const bool wedge = (kind == boundaryKinds::kind::wedge);
-        const bool imaged = (patchi == wedgeA_);
+        const bool imaged = wedges_.imaged(patchi);
 
         const fvPatch& patch = mesh_.boundary()[patchi];
         const labelUList& fc = patch.faceCells();
@@ -345,14 +232,7 @@ void Foam::demSolver::boundaryFaces()
                 );
                 if (imaged)
                 {
-                    // The image face's state in the mid-plane is this
-                    // one's; its normal is its own
-                    const label fb = wedgeImage_[i];
-                    assembly_.internalContacts
-                    (
-                        celli, toEigen(Sf[fb]/magSf_[fb]), magSf_[fb],
-                        side, rec
-                    );
+                    wedges_.internalContacts(i, celli, side, rec, assembly_);
                 }
             }
 
@@ -381,13 +261,7 @@ void Foam::demSolver::boundaryFaces()
                 );
                 assembly_.addToCell(celli, 0, magSf_[facei]);
                 cobasis_.addFace(celli, S, side, side, assembly_);
-
-                const label fb = wedgeImage_[i];
-                assembly_.addImageToCell(celli, magSf_[fb], wedgeQ_);
-                cobasis_.addFace
-                (
-                    celli, toEigen(Sf[fb]), side, side, assembly_, &wedgeQ_
-                );
+                wedges_.addImage(i, celli, side, assembly_, cobasis_);
                 continue;
             }
 
