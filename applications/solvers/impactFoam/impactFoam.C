@@ -115,7 +115,8 @@ int main(int argc, char *argv[])
         // The step; cells whose update fails the state checks are taken
         // at first order (their faces with HLL) and the step repeated,
         // before any cut of the time step (docs/numerics.md section 8.3)
-        dem.clearFallback();
+        firstOrderFallback& fallback = dem.fallback();
+        fallback.clear();
         mechanicalRelaxation::stateError err;
         bool failed = false;
         for (label round = 0; ; ++round)
@@ -127,8 +128,8 @@ int main(int argc, char *argv[])
             if
             (
                 !failed
-             || round == dem.maxFallbackRounds()
-             || !dem.addFallback(relaxation.badCells())
+             || round == fallback.maxRounds()
+             || !fallback.add(relaxation.badCells())
             )
             {
                 break;
@@ -153,13 +154,13 @@ int main(int argc, char *argv[])
         counts[0] = relaxation.nVacuum();
         counts[1] = relaxation.nUnpaid();
         counts[2] = relaxation.unpaidEnergy();
-        counts[3] = dem.nFallbackCells();
-        counts[4] = dem.nFallbackFaces();
+        counts[3] = fallback.nCells();
+        counts[4] = fallback.nFaces();
         counts[5] = voidCells.nCells();
         counts[6] = voidCells.energy();
         Pstream::listCombineGather(counts, plusEqOp<scalar>());
         Pstream::listCombineScatter(counts);
-        dem.countStep(counts[3], counts[4]);
+        fallback.countStep(counts[3], counts[4]);
         if (counts[0] > 0)
         {
             Info<< "    vacuum floor (pVacuum) in " << counts[0] << " cells"
@@ -201,7 +202,7 @@ int main(int argc, char *argv[])
         runTime.writeNow();
     }
 
-    dem.reportFallback();
+    dem.fallback().report();
     runTime.printExecutionTime(Info);
 
     Info<< "End\n" << endl;

@@ -1,7 +1,6 @@
 #include "demSolver.H"
 #include "faceFrame.H"
 #include "wedgePolyPatch.H"
-#include "syncTools.H"
 #include "foamEigen.H"
 
 using Foam::foamEigen::toEigen;
@@ -33,27 +32,10 @@ Foam::demSolver::demSolver
     faceO_(nPhases_),
     faceN_(nPhases_),
     ghost_(nPhases_),
-    maxFallbackRounds_(schemeDict.getOrDefault<label>("fallbackRounds", 3)),
-    fallbackInterfaces_
-    (
-        schemeDict.getOrDefault<bool>("fallbackInterfaces", false)
-    ),
-    fallbackCells_(mesh_.nCells(), false),
-    fallbackFaces_(mesh_.nFaces(), false),
-    nFallbackFaces_(0),
-    cellSteps_(0),
-    faceSteps_(0),
-    fallbackCellSteps_(0),
-    fallbackFaceSteps_(0),
+    fallback_(phases, schemeDict),
     wedges_(mesh_, phases.boundary(), magSf_, schemeDict)
 {
-    if (maxFallbackRounds_ < 0)
-    {
-        FatalIOErrorInFunction(schemeDict)
-            << "fallbackRounds " << maxFallbackRounds_ << " must be >= 0"
-            << exit(FatalIOError);
-    }
-    reconstruction_->setFirstOrderCells(&fallbackCells_);
+    reconstruction_->setFirstOrderCells(&fallback_.cells());
 
     const vectorField& Sf = mesh_.faceAreas();
     forAll(Sf, facei)
@@ -120,14 +102,12 @@ void Foam::demSolver::internalFaces()
     const reconstruction& rec = reconstruction_();
     const bool centred = rec.timeCentred();
 
-    const bool anyFallback = nFallbackFaces_ > 0;
-
     forAll(nei, facei)
     {
         const label o = own[facei];
         const label nb = nei[facei];
 
-        const bool fallback = anyFallback && fallbackFaces_[facei];
+        const bool fallback = fallback_.firstOrderFace(facei);
         if (fallback)
         {
             rec.cellMeanState(o, faceO_);
@@ -164,7 +144,6 @@ void Foam::demSolver::boundaryFaces()
     const reconstruction& rec = reconstruction_();
     const bool centred = rec.timeCentred();
     const boundaryKinds& kinds = phases_.boundary();
-    const bool anyFallback = nFallbackFaces_ > 0;
 
     // The cell's face state of a face that is not coupled
     std::vector<phaseSide> cellFace(nPhases_);
@@ -205,7 +184,7 @@ void Foam::demSolver::boundaryFaces()
             const label celli = fc[i];
             const cobasis::vector S(toEigen(Sf[facei]));
             const cobasis::vector n(S/magSf_[facei]);
-            const bool fallback = anyFallback && fallbackFaces_[facei];
+            const bool fallback = fallback_.firstOrderFace(facei);
 
             if (!coupled && fallback)
             {
@@ -396,11 +375,7 @@ void Foam::demSolver::prepare()
 void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
 {
     reconstruction_->update(dt, acceleration_);
-    boundaryStates_.update
-    (
-        reconstruction_(),
-        nFallbackFaces_ > 0 ? &fallbackFaces_ : nullptr
-    );
+    boundaryStates_.update(reconstruction_(), fallback_.faces());
     assembly_.reset();
     cobasis_.reset(reconstruction_());
 
@@ -408,111 +383,6 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
     boundaryFaces();
 
     newState(dt, q);
-}
-
-
-bool Foam::demSolver::addFallback(const labelUList& cells)
-{
-    bool added = false;
-    for (const label c : cells)
-    {
-        if (!fallbackCells_[c])
-        {
-            fallbackCells_[c] = true;
-            flaggedCells_.append(c);
-            added = true;
-        }
-    }
-    if (!returnReduce(added, orOp<bool>()))
-    {
-        return false;
-    }
-
-    // Every face of a flagged cell, also across processor boundaries
-    boolList nbrCells;
-    syncTools::swapBoundaryCellList(mesh_, fallbackCells_, nbrCells);
-
-    const labelUList& own = mesh_.faceOwner();
-    const labelUList& nei = mesh_.faceNeighbour();
-    const label nInternal = mesh_.nInternalFaces();
-    nFallbackFaces_ = 0;
-    forAll(fallbackFaces_, facei)
-    {
-        fallbackFaces_[facei] =
-            fallbackCells_[own[facei]]
-         || (
-                facei < nInternal
-              ? fallbackCells_[nei[facei]]
-              : nbrCells[facei - nInternal]
-            );
-        if (fallbackFaces_[facei]) ++nFallbackFaces_;
-    }
-    return true;
-}
-
-
-void Foam::demSolver::clearFallback()
-{
-    for (const label c : flaggedCells_)
-    {
-        fallbackCells_[c] = false;
-    }
-    flaggedCells_.clear();
-    if (nFallbackFaces_ > 0)
-    {
-        fallbackFaces_ = false;
-        nFallbackFaces_ = 0;
-    }
-
-    if (fallbackInterfaces_)
-    {
-        const scalar aMinor = phases_.alphaMinor();
-        DynamicList<label> mixed;
-        for (label c = 0; c < mesh_.nCells(); ++c)
-        {
-            for (label k = 0; k < nPhases_; ++k)
-            {
-                const scalar a = phases_.alpha(k)[c];
-                if (a > aMinor && a < 1 - aMinor)
-                {
-                    mixed.append(c);
-                    break;
-                }
-            }
-        }
-        addFallback(mixed);
-    }
-}
-
-
-void Foam::demSolver::countStep
-(
-    const scalar nCellsAll,
-    const scalar nFacesAll
-)
-{
-    cellSteps_ += mesh_.nCells();
-    faceSteps_ += mesh_.nFaces();
-    if (nCellsAll > 0)
-    {
-        fallbackCellSteps_ += flaggedCells_.size();
-        fallbackFaceSteps_ += nFallbackFaces_;
-        Info<< "    fallback: " << nCellsAll << " cells, " << nFacesAll
-            << " faces at first order (HLL)" << nl;
-    }
-}
-
-
-void Foam::demSolver::reportFallback() const
-{
-    const scalar cells = returnReduce(cellSteps_, sumOp<scalar>());
-    const scalar faces = returnReduce(faceSteps_, sumOp<scalar>());
-    const scalar fbCells = returnReduce(fallbackCellSteps_, sumOp<scalar>());
-    const scalar fbFaces = returnReduce(fallbackFaceSteps_, sumOp<scalar>());
-    Info<< "Fallback to first order: " << fbCells << " of " << cells
-        << " cell updates (" << (cells > 0 ? fbCells/cells : 0) << "), "
-        << fbFaces << " of " << faces << " face updates ("
-        << (faces > 0 ? fbFaces/faces : 0) << ")" << nl;
 }
 
 
