@@ -84,8 +84,7 @@ int main(int argc, char *argv[])
     mechanicalRelaxation relaxation(phases);
     voidVelocity voidCells(phases);
     bodyForces forces(mesh);
-    stepControl step(runTime, phases, dem);
-    conservedState q;
+    stepControl step(runTime, phases, dem, relaxation, forces);
 
     // The totals at each write time: the domain's mass and energy change
     // only through its boundaries and what the relaxation sets without a
@@ -112,32 +111,10 @@ int main(int argc, char *argv[])
         {
             dem.setAcceleration(forces.update(runTime.value() - 0.5*dt));
         }
-        // The step; cells whose update fails the state checks are taken
-        // at first order (their faces with HLL) and the step repeated,
-        // before any cut of the time step (docs/numerics.md section 8.3)
-        firstOrderFallback& fallback = dem.fallback();
-        fallback.clear();
-        mechanicalRelaxation::stateError err;
-        bool failed = false;
-        for (label round = 0; ; ++round)
-        {
-            dem.hyperbolicStep(dt, q);
-            forces.addSources(dt, q);
-            err = relaxation.correct(q, dt);
-            failed = returnReduce(err.failed, orOp<bool>());
-            if
-            (
-                !failed
-             || round == fallback.maxRounds()
-             || !fallback.add(relaxation.badCells())
-            )
-            {
-                break;
-            }
-            phases.restoreState();
-        }
-
-        if (!step.accept(err, failed))
+        // The hyperbolic step and the relaxation, repeated with the failing
+        // cells at first order; rejected (false): retried with a shorter
+        // time step
+        if (!step.take(dt))
         {
             continue;
         }
@@ -154,13 +131,13 @@ int main(int argc, char *argv[])
         counts[0] = relaxation.nVacuum();
         counts[1] = relaxation.nUnpaid();
         counts[2] = relaxation.unpaidEnergy();
-        counts[3] = fallback.nCells();
-        counts[4] = fallback.nFaces();
+        counts[3] = dem.fallback().nCells();
+        counts[4] = dem.fallback().nFaces();
         counts[5] = voidCells.nCells();
         counts[6] = voidCells.energy();
         Pstream::listCombineGather(counts, plusEqOp<scalar>());
         Pstream::listCombineScatter(counts);
-        fallback.countStep(counts[3], counts[4]);
+        dem.fallback().countStep(counts[3], counts[4]);
         if (counts[0] > 0)
         {
             Info<< "    vacuum floor (pVacuum) in " << counts[0] << " cells"
