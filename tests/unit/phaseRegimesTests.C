@@ -146,6 +146,9 @@ TEST(phaseRegimes, negligibleAndVoid)
     EXPECT_FALSE(r.negligible(0.5, 0.6, 10));
     EXPECT_TRUE(r.negligible(0.5, 5e-6, 10));
     EXPECT_FALSE(regimes("pVacuum -1;").vacuumFloor());
+    EXPECT_TRUE(r.mixed(0.5));
+    EXPECT_FALSE(r.mixed(5e-4));
+    EXPECT_FALSE(r.mixed(1 - 5e-4));
 }
 
 

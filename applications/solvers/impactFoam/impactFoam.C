@@ -33,7 +33,7 @@ Description
 #include "voidVelocity.H"
 #include "bodyForces.H"
 #include "stepControl.H"
-#include "OStringStream.H"
+#include "stepReport.H"
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
@@ -84,22 +84,10 @@ int main(int argc, char *argv[])
     mechanicalRelaxation relaxation(phases);
     voidVelocity voidCells(phases);
     bodyForces forces(mesh);
-    stepControl step(runTime, phases, dem);
-    conservedState q;
+    stepControl step(runTime, phases, dem, relaxation, forces);
+    stepReport report(phases, relaxation, dem, voidCells);
 
-    // The totals at each write time: the domain's mass and energy change
-    // only through its boundaries and what the relaxation sets without a
-    // payer (the vacuum floor of a lone gas, a trace heavier than its
-    // cell's other phases), summed here
-    scalar unpaidTotal = 0;
-    {
-        const Pair<scalar> totals(phases.totals());
-        OStringStream os;
-        os.precision(15);
-        os  << "Initial totals: mass " << totals.first() << " kg, energy "
-            << totals.second() << " J";
-        Info<< os.str().c_str() << nl;
-    }
+    report.logTotals(true);
 
     Info<< "\nStarting time loop\n" << endl;
 
@@ -112,31 +100,11 @@ int main(int argc, char *argv[])
         {
             dem.setAcceleration(forces.update(runTime.value() - 0.5*dt));
         }
-        // The step; cells whose update fails the state checks are taken
-        // at first order (their faces with HLL) and the step repeated,
-        // before any cut of the time step (docs/numerics.md section 8.3)
-        dem.clearFallback();
-        mechanicalRelaxation::stateError err;
-        bool failed = false;
-        for (label round = 0; ; ++round)
-        {
-            dem.hyperbolicStep(dt, q);
-            forces.addSources(dt, q);
-            err = relaxation.correct(q, dt);
-            failed = returnReduce(err.failed, orOp<bool>());
-            if
-            (
-                !failed
-             || round == dem.maxFallbackRounds()
-             || !dem.addFallback(relaxation.badCells())
-            )
-            {
-                break;
-            }
-            phases.restoreState();
-        }
 
-        if (!step.accept(err, failed))
+        // The hyperbolic step and the relaxation, repeated with the failing
+        // cells at first order; rejected (false): retried with a shorter
+        // time step
+        if (!step.take(dt))
         {
             continue;
         }
@@ -145,52 +113,16 @@ int main(int argc, char *argv[])
         // range (docs/numerics.md 9.11)
         voidCells.correct();
 
-        // What the step did beyond the scheme, summed over the processors
-        // in one reduction: vacuum floors, phases set without a payer and
-        // the energy that added, cells and faces at first order, void
-        // cells whose velocity was held and the kinetic energy that added
-        List<scalar> counts(7);
-        counts[0] = relaxation.nVacuum();
-        counts[1] = relaxation.nUnpaid();
-        counts[2] = relaxation.unpaidEnergy();
-        counts[3] = dem.nFallbackCells();
-        counts[4] = dem.nFallbackFaces();
-        counts[5] = voidCells.nCells();
-        counts[6] = voidCells.energy();
-        Pstream::listCombineGather(counts, plusEqOp<scalar>());
-        Pstream::listCombineScatter(counts);
-        dem.countStep(counts[3], counts[4]);
-        if (counts[0] > 0)
-        {
-            Info<< "    vacuum floor (pVacuum) in " << counts[0] << " cells"
-                << nl;
-        }
-        if (counts[1] > 0)
-        {
-            unpaidTotal += counts[2];
-            Info<< "    set without a payer (vacuum floor, trace reset) in "
-                << counts[1] << " cells: energy added " << counts[2] << " J"
-                << nl;
-        }
-        if (counts[5] > 0)
-        {
-            unpaidTotal += counts[6];
-            Info<< "    void cells: velocity held in " << counts[5]
-                << " cells: energy added " << counts[6] << " J" << nl;
-        }
+        // What the step did beyond the scheme (vacuum floors, phases set
+        // without a payer, cells at first order, void cells), logged
+        report.step();
 
         phases.correctBoundaryConditions();
         phases.correctDensity();
         step.write();
         if (runTime.writeTime())
         {
-            const Pair<scalar> totals(phases.totals());
-            OStringStream os;
-            os.precision(15);
-            os  << "    totals: mass " << totals.first() << " kg, energy "
-                << totals.second() << " J, energy added without a payer "
-                << unpaidTotal << " J";
-            Info<< os.str().c_str() << nl;
+            report.logTotals(false);
         }
     }
 
@@ -201,7 +133,7 @@ int main(int argc, char *argv[])
         runTime.writeNow();
     }
 
-    dem.reportFallback();
+    dem.fallback().report();
     runTime.printExecutionTime(Info);
 
     Info<< "End\n" << endl;

@@ -7,12 +7,16 @@ Foam::stepControl::stepControl
 (
     Time& runTime,
     phaseSystem& phases,
-    const demSolver& dem
+    demSolver& dem,
+    mechanicalRelaxation& relaxation,
+    const bodyForces& forces
 )
 :
     runTime_(runTime),
     phases_(phases),
     dem_(dem),
+    relaxation_(relaxation),
+    forces_(forces),
     maxCo_
     (
         // Default: 0.6 at second order, 0.4 at first (0.8 of its limit
@@ -94,6 +98,37 @@ Foam::scalar Foam::stepControl::advance()
     }
 
     return dt;
+}
+
+
+bool Foam::stepControl::take(const scalar dt)
+{
+    // Cells whose update fails the state checks are taken at first order
+    // (their faces with HLL) and the step repeated, before any cut of the
+    // time step (docs/numerics.md section 8.3)
+    firstOrderFallback& fallback = dem_.fallback();
+    fallback.clear();
+    mechanicalRelaxation::stateError err;
+    bool failed = false;
+    for (label round = 0; ; ++round)
+    {
+        dem_.hyperbolicStep(dt, q_);
+        forces_.addSources(dt, q_);
+        err = relaxation_.correct(q_, dt);
+        failed = returnReduce(err.failed, orOp<bool>());
+        if
+        (
+            !failed
+         || round == fallback.maxRounds()
+         || !fallback.add(relaxation_.badCells())
+        )
+        {
+            break;
+        }
+        phases_.restoreState();
+    }
+
+    return accept(err, failed);
 }
 
 

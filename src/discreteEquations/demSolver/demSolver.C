@@ -1,7 +1,6 @@
 #include "demSolver.H"
 #include "faceFrame.H"
 #include "wedgePolyPatch.H"
-#include "syncTools.H"
 #include "foamEigen.H"
 
 using Foam::foamEigen::toEigen;
@@ -33,29 +32,10 @@ Foam::demSolver::demSolver
     faceO_(nPhases_),
     faceN_(nPhases_),
     ghost_(nPhases_),
-    wedgeA_(-1),
-    wedgeB_(-1),
-    wedgeQ_(cobasis::matrix::Identity()),
-    maxFallbackRounds_(schemeDict.getOrDefault<label>("fallbackRounds", 3)),
-    fallbackInterfaces_
-    (
-        schemeDict.getOrDefault<bool>("fallbackInterfaces", false)
-    ),
-    fallbackCells_(mesh_.nCells(), false),
-    fallbackFaces_(mesh_.nFaces(), false),
-    nFallbackFaces_(0),
-    cellSteps_(0),
-    faceSteps_(0),
-    fallbackCellSteps_(0),
-    fallbackFaceSteps_(0)
+    fallback_(phases, schemeDict),
+    wedges_(mesh_, phases.boundary(), magSf_, schemeDict)
 {
-    if (maxFallbackRounds_ < 0)
-    {
-        FatalIOErrorInFunction(schemeDict)
-            << "fallbackRounds " << maxFallbackRounds_ << " must be >= 0"
-            << exit(FatalIOError);
-    }
-    reconstruction_->setFirstOrderCells(&fallbackCells_);
+    reconstruction_->setFirstOrderCells(&fallback_.cells());
 
     const vectorField& Sf = mesh_.faceAreas();
     forAll(Sf, facei)
@@ -65,7 +45,6 @@ Foam::demSolver::demSolver
     }
 
     setOffsets();
-    pairWedgeFaces(schemeDict);
 
     Info<< "Discrete equations: Riemann solver " << assembly_.riemann().type()
         << ", reconstruction ";
@@ -115,116 +94,6 @@ void Foam::demSolver::setOffsets()
 }
 
 
-void Foam::demSolver::pairWedgeFaces(const dictionary& schemeDict)
-{
-    const boundaryKinds& kinds = phases_.boundary();
-    labelList wedges;
-    forAll(mesh_.boundary(), patchi)
-    {
-        if (kinds[patchi] == boundaryKinds::kind::wedge)
-        {
-            wedges.append(patchi);
-        }
-    }
-    if (wedges.empty())
-    {
-        return;
-    }
-    if (!schemeDict.getOrDefault<bool>("wedgeImages", true))
-    {
-        Info<< "Wedge faces: each solved (wedgeImages no)" << nl;
-        return;
-    }
-
-    // The second wedge face of every cell is the image of its first under
-    // Q = T_B T_A^T, with the reversed orientation, if the mesh is a
-    // one-cell-thick wedge: two wedge patches, each cell with one face in
-    // each, reconstructed at the same point of the mid-plane (7.2)
-    string reason;
-    labelList image;
-    cobasis::matrix Q(cobasis::matrix::Identity());
-    if (wedges.size() != 2)
-    {
-        reason = "not two wedge patches";
-    }
-    else
-    {
-        const wedgePolyPatch& a =
-            refCast<const wedgePolyPatch>(mesh_.boundaryMesh()[wedges[0]]);
-        const wedgePolyPatch& b =
-            refCast<const wedgePolyPatch>(mesh_.boundaryMesh()[wedges[1]]);
-        Q = toEigen(b.faceT() & a.faceT().T());
-        const vectorField& Sf = mesh_.faceAreas();
-        const vectorField& Cf = mesh_.faceCentres();
-
-        labelList faceB(mesh_.nCells(), -1);
-        const labelUList& cellsB = b.faceCells();
-        forAll(cellsB, i)
-        {
-            if (faceB[cellsB[i]] >= 0)
-            {
-                reason = "a cell with two faces on " + b.name();
-            }
-            faceB[cellsB[i]] = b.start() + i;
-        }
-
-        const labelUList& cellsA = a.faceCells();
-        if (cellsA.size() != cellsB.size())
-        {
-            reason = a.name() + " and " + b.name() + " differ in size";
-        }
-        image.setSize(cellsA.size(), -1);
-        forAll(cellsA, i)
-        {
-            if (!reason.empty()) break;
-
-            const label fa = a.start() + i;
-            const label fb = faceB[cellsA[i]];
-            if (fb < 0)
-            {
-                reason = "a cell without a face on " + b.name();
-                break;
-            }
-            const cobasis::vector nA(toEigen(Sf[fa]/magSf_[fa]));
-            const cobasis::vector nB(toEigen(Sf[fb]/magSf_[fb]));
-            const scalar length = sqrt(magSf_[fa]);
-            const vector dImage
-            (
-                (a.faceT().T() & Cf[fa]) - (b.faceT().T() & Cf[fb])
-            );
-            if
-            (
-                (nB + Q*nA).norm() > 1e-9
-             || mag(dImage) > 1e-9*length
-             || mag(magSf_[fb] - magSf_[fa]) > 1e-9*magSf_[fa]
-            )
-            {
-                reason = "faces of a cell not images of each other";
-                break;
-            }
-            image[i] = fb;
-        }
-    }
-
-    // The same choice on every processor
-    if (!returnReduce(reason.empty(), andOp<bool>()))
-    {
-        if (reason.empty())
-        {
-            reason = "not on every processor";
-        }
-        Info<< "Wedge faces: each solved (" << reason << ")" << nl;
-        return;
-    }
-    wedgeA_ = wedges[0];
-    wedgeB_ = wedges[1];
-    wedgeImage_.transfer(image);
-    wedgeQ_ = Q;
-    Info<< "Wedge faces: " << mesh_.boundary()[wedgeB_].name()
-        << " as the image of " << mesh_.boundary()[wedgeA_].name() << nl;
-}
-
-
 void Foam::demSolver::internalFaces()
 {
     const labelUList& own = mesh_.owner();
@@ -233,14 +102,12 @@ void Foam::demSolver::internalFaces()
     const reconstruction& rec = reconstruction_();
     const bool centred = rec.timeCentred();
 
-    const bool anyFallback = nFallbackFaces_ > 0;
-
     forAll(nei, facei)
     {
         const label o = own[facei];
         const label nb = nei[facei];
 
-        const bool fallback = anyFallback && fallbackFaces_[facei];
+        const bool fallback = fallback_.firstOrderFace(facei);
         if (fallback)
         {
             rec.cellMeanState(o, faceO_);
@@ -277,7 +144,6 @@ void Foam::demSolver::boundaryFaces()
     const reconstruction& rec = reconstruction_();
     const bool centred = rec.timeCentred();
     const boundaryKinds& kinds = phases_.boundary();
-    const bool anyFallback = nFallbackFaces_ > 0;
 
     // The cell's face state of a face that is not coupled
     std::vector<phaseSide> cellFace(nPhases_);
@@ -285,14 +151,14 @@ void Foam::demSolver::boundaryFaces()
     forAll(mesh_.boundary(), patchi)
     {
         const boundaryKinds::kind kind = kinds[patchi];
-        if (kind == boundaryKinds::kind::empty || patchi == wedgeB_)
+        if (kind == boundaryKinds::kind::empty || wedges_.isImage(patchi))
         {
-            // (wedgeB_'s faces are added as the images of wedgeA_'s)
+            // (an image patch's faces are added with the imaged patch's)
             continue;
         }
         const bool coupled = (kind == boundaryKinds::kind::coupled);
         const bool wedge = (kind == boundaryKinds::kind::wedge);
-        const bool imaged = (patchi == wedgeA_);
+        const bool imaged = wedges_.imaged(patchi);
 
         const fvPatch& patch = mesh_.boundary()[patchi];
         const labelUList& fc = patch.faceCells();
@@ -318,7 +184,7 @@ void Foam::demSolver::boundaryFaces()
             const label celli = fc[i];
             const cobasis::vector S(toEigen(Sf[facei]));
             const cobasis::vector n(S/magSf_[facei]);
-            const bool fallback = anyFallback && fallbackFaces_[facei];
+            const bool fallback = fallback_.firstOrderFace(facei);
 
             if (!coupled && fallback)
             {
@@ -345,14 +211,7 @@ void Foam::demSolver::boundaryFaces()
                 );
                 if (imaged)
                 {
-                    // The image face's state in the mid-plane is this
-                    // one's; its normal is its own
-                    const label fb = wedgeImage_[i];
-                    assembly_.internalContacts
-                    (
-                        celli, toEigen(Sf[fb]/magSf_[fb]), magSf_[fb],
-                        side, rec
-                    );
+                    wedges_.internalContacts(i, celli, side, rec, assembly_);
                 }
             }
 
@@ -381,13 +240,7 @@ void Foam::demSolver::boundaryFaces()
                 );
                 assembly_.addToCell(celli, 0, magSf_[facei]);
                 cobasis_.addFace(celli, S, side, side, assembly_);
-
-                const label fb = wedgeImage_[i];
-                assembly_.addImageToCell(celli, magSf_[fb], wedgeQ_);
-                cobasis_.addFace
-                (
-                    celli, toEigen(Sf[fb]), side, side, assembly_, &wedgeQ_
-                );
+                wedges_.addImage(i, celli, side, assembly_, cobasis_);
                 continue;
             }
 
@@ -522,11 +375,7 @@ void Foam::demSolver::prepare()
 void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
 {
     reconstruction_->update(dt, acceleration_);
-    boundaryStates_.update
-    (
-        reconstruction_(),
-        nFallbackFaces_ > 0 ? &fallbackFaces_ : nullptr
-    );
+    boundaryStates_.update(reconstruction_(), fallback_.faces());
     assembly_.reset();
     cobasis_.reset(reconstruction_());
 
@@ -534,111 +383,6 @@ void Foam::demSolver::hyperbolicStep(const scalar dt, conservedState& q)
     boundaryFaces();
 
     newState(dt, q);
-}
-
-
-bool Foam::demSolver::addFallback(const labelUList& cells)
-{
-    bool added = false;
-    for (const label c : cells)
-    {
-        if (!fallbackCells_[c])
-        {
-            fallbackCells_[c] = true;
-            flaggedCells_.append(c);
-            added = true;
-        }
-    }
-    if (!returnReduce(added, orOp<bool>()))
-    {
-        return false;
-    }
-
-    // Every face of a flagged cell, also across processor boundaries
-    boolList nbrCells;
-    syncTools::swapBoundaryCellList(mesh_, fallbackCells_, nbrCells);
-
-    const labelUList& own = mesh_.faceOwner();
-    const labelUList& nei = mesh_.faceNeighbour();
-    const label nInternal = mesh_.nInternalFaces();
-    nFallbackFaces_ = 0;
-    forAll(fallbackFaces_, facei)
-    {
-        fallbackFaces_[facei] =
-            fallbackCells_[own[facei]]
-         || (
-                facei < nInternal
-              ? fallbackCells_[nei[facei]]
-              : nbrCells[facei - nInternal]
-            );
-        if (fallbackFaces_[facei]) ++nFallbackFaces_;
-    }
-    return true;
-}
-
-
-void Foam::demSolver::clearFallback()
-{
-    for (const label c : flaggedCells_)
-    {
-        fallbackCells_[c] = false;
-    }
-    flaggedCells_.clear();
-    if (nFallbackFaces_ > 0)
-    {
-        fallbackFaces_ = false;
-        nFallbackFaces_ = 0;
-    }
-
-    if (fallbackInterfaces_)
-    {
-        const scalar aMinor = phases_.regimes().alphaMinor();
-        DynamicList<label> mixed;
-        for (label c = 0; c < mesh_.nCells(); ++c)
-        {
-            for (label k = 0; k < nPhases_; ++k)
-            {
-                const scalar a = phases_.alpha(k)[c];
-                if (a > aMinor && a < 1 - aMinor)
-                {
-                    mixed.append(c);
-                    break;
-                }
-            }
-        }
-        addFallback(mixed);
-    }
-}
-
-
-void Foam::demSolver::countStep
-(
-    const scalar nCellsAll,
-    const scalar nFacesAll
-)
-{
-    cellSteps_ += mesh_.nCells();
-    faceSteps_ += mesh_.nFaces();
-    if (nCellsAll > 0)
-    {
-        fallbackCellSteps_ += flaggedCells_.size();
-        fallbackFaceSteps_ += nFallbackFaces_;
-        Info<< "    fallback: " << nCellsAll << " cells, " << nFacesAll
-            << " faces at first order (HLL)" << nl;
-    }
-}
-
-
-void Foam::demSolver::reportFallback() const
-{
-    const scalar cells = returnReduce(cellSteps_, sumOp<scalar>());
-    const scalar faces = returnReduce(faceSteps_, sumOp<scalar>());
-    const scalar fbCells = returnReduce(fallbackCellSteps_, sumOp<scalar>());
-    const scalar fbFaces = returnReduce(fallbackFaceSteps_, sumOp<scalar>());
-    Info<< "Fallback to first order: " << fbCells << " of " << cells
-        << " cell updates (" << (cells > 0 ? fbCells/cells : 0) << "), "
-        << fbFaces << " of " << faces << " face updates ("
-        << (faces > 0 ? fbFaces/faces : 0) << ")" << nl;
 }
 
 

@@ -1,0 +1,100 @@
+#include "stepReport.H"
+#include "OStringStream.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::stepReport::stepReport
+(
+    const phaseSystem& phases,
+    const mechanicalRelaxation& relaxation,
+    demSolver& dem,
+    const voidVelocity& voidCells
+)
+:
+    phases_(phases),
+    relaxation_(relaxation),
+    dem_(dem),
+    voidCells_(voidCells),
+    unpaidTotal_(0)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::stepReport::counts::reduce()
+{
+    List<scalar> all(7);
+    all[0] = vacuumCells;
+    all[1] = unpaidCells;
+    all[2] = unpaidEnergy;
+    all[3] = fallbackCells;
+    all[4] = fallbackFaces;
+    all[5] = voidCells;
+    all[6] = voidEnergy;
+    Pstream::listCombineGather(all, plusEqOp<scalar>());
+    Pstream::listCombineScatter(all);
+    vacuumCells = all[0];
+    unpaidCells = all[1];
+    unpaidEnergy = all[2];
+    fallbackCells = all[3];
+    fallbackFaces = all[4];
+    voidCells = all[5];
+    voidEnergy = all[6];
+}
+
+
+void Foam::stepReport::step()
+{
+    counts n;
+    n.vacuumCells = relaxation_.nVacuum();
+    n.unpaidCells = relaxation_.nUnpaid();
+    n.unpaidEnergy = relaxation_.unpaidEnergy();
+    n.fallbackCells = dem_.fallback().nCells();
+    n.fallbackFaces = dem_.fallback().nFaces();
+    n.voidCells = voidCells_.nCells();
+    n.voidEnergy = voidCells_.energy();
+    n.reduce();
+
+    dem_.fallback().countStep(n.fallbackCells, n.fallbackFaces);
+    if (n.vacuumCells > 0)
+    {
+        Info<< "    vacuum floor (pVacuum) in " << n.vacuumCells << " cells"
+            << nl;
+    }
+    if (n.unpaidCells > 0)
+    {
+        unpaidTotal_ += n.unpaidEnergy;
+        Info<< "    set without a payer (vacuum floor, trace reset) in "
+            << n.unpaidCells << " cells: energy added " << n.unpaidEnergy
+            << " J" << nl;
+    }
+    if (n.voidCells > 0)
+    {
+        unpaidTotal_ += n.voidEnergy;
+        Info<< "    void cells: velocity held in " << n.voidCells
+            << " cells: energy added " << n.voidEnergy << " J" << nl;
+    }
+}
+
+
+void Foam::stepReport::logTotals(const bool initial) const
+{
+    const Pair<scalar> totals(phases_.totals());
+    OStringStream os;
+    os.precision(15);
+    if (initial)
+    {
+        os  << "Initial totals: mass " << totals.first() << " kg, energy "
+            << totals.second() << " J";
+    }
+    else
+    {
+        os  << "    totals: mass " << totals.first() << " kg, energy "
+            << totals.second() << " J, energy added without a payer "
+            << unpaidTotal_ << " J";
+    }
+    Info<< os.str().c_str() << nl;
+}
+
+
+// ************************************************************************* //
