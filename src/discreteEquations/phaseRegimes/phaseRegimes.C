@@ -36,7 +36,7 @@ Foam::phaseRegimes::phaseRegimes(const dictionary& dict)
     alphaMinor_(dict.getOrDefault<scalar>("alphaMinor", 1e-3)),
     massFractionMinor_(dict.getOrDefault<scalar>("massFractionMinor", 1e-6)),
     gasTraceRatio_(dict.getOrDefault<scalar>("gasTraceRatio", 1)),
-    dustDensityRatio_(dict.getOrDefault<scalar>("dustDensityRatio", 0)),
+    dustDensityRatio_(dict.getOrDefault<scalar>("dustDensityRatio", 0.5)),
     pVacuum_(dict.getOrDefault<scalar>("pVacuum", 1))
 {
     for (const Pair<word>& removed : removedKeywords)
