@@ -5,7 +5,8 @@ are read (phaseSystem::correctOutputs, stepControl::write).
 The solver computes them, the stress of every solid in every cell, only
 when they are written, or every step if the case has function objects.
 The case tests/cases/voidCells (1-D, copper and air, a copper trace moving
-through near-vacuum air, about 30 steps to 0.1 us) is run twice:
+through near-vacuum air, 8 steps to 0.1 us: the trace is metal dust and
+does not set the time step, docs/numerics.md 2.7) is run twice:
 
 - A: written every step, no function objects (the fields on disk at every
   step are the reference);
@@ -14,7 +15,7 @@ through near-vacuum air, about 30 steps to 0.1 us) is run twice:
   function object on p and sigmaEq every step.
 
 Checks:
-- both runs reach their end time;
+- both runs reach their end time, A in more than 5 steps;
 - at every step, B's function object reports the minimum and maximum of p
   and sigmaEq that A wrote at that time, to 1e-10 relative (the files
   hold 12 and 13 significant digits; with the fields computed only at
@@ -106,7 +107,7 @@ def main():
     times_b = [name for _, name in fc.time_dirs(b)]
     reached = (abs(float(times_a[-1]) - T_END) <= 1e-6 * T_END
                and abs(float(times_b[-1]) - T_END) <= 1e-6 * T_END)
-    checks.check("outputFields_run", reached and len(times_a) > 10,
+    checks.check("outputFields_run", reached and len(times_a) > 6,
                  "A wrote %d times, B %d; last at %s and %s s (end %g s)"
                  % (len(times_a), len(times_b), times_a[-1], times_b[-1],
                     T_END))
