@@ -49,7 +49,19 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
     alphaCompression_(dict.getOrDefault<scalar>("alphaCompression", 1)),
     thinc_(),
     thincFullRange_(false),
-    cobasisLimiter_(),
+    cobasisGradient_
+    (
+        mesh_,
+        // A wall's ghost is the cell's mirror image (docs/numerics.md
+        // section 7)
+        phases.boundary().limiterNeighbours(false),
+        readOption
+        (
+            dict, "cobasisLimiter", limiterNames, limiter::cellLimited,
+            "discreteEquations"
+        )
+     == limiter::cellLimited
+    ),
     relaxPredictor_(dict.getOrDefault<Switch>("predictorRelaxation", true)),
     slopes_(nPhases_),
     alphaScratch_(nPhases_),
@@ -95,24 +107,6 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
                 << " is not in [0.5, 10]" << exit(FatalIOError);
         }
         thinc_.reset(new THINC(beta));
-    }
-
-    if
-    (
-        readOption
-        (
-            dict, "cobasisLimiter", limiterNames, limiter::cellLimited,
-            "discreteEquations"
-        )
-     == limiter::cellLimited
-    )
-    {
-        // A wall's ghost is the cell's mirror image (docs/numerics.md
-        // section 7)
-        cobasisLimiter_.reset
-        (
-            new cellLimiter(mesh_, phases.boundary().limiterNeighbours(false))
-        );
     }
 
     solidSlopes_.resize(nPhases_);
@@ -226,96 +220,6 @@ void Foam::reconstructions::MUSCLHancock::compressAlphaSlopes
     }
 }
 
-
-
-void Foam::reconstructions::MUSCLHancock::cobasisSlopes
-(
-    const volTensorField& A
-)
-{
-    const labelUList& own = mesh_.owner();
-    const labelUList& nei = mesh_.neighbour();
-    const vectorField& Sf = mesh_.Sf();
-    const scalarField& w = mesh_.weights();
-    const tensorField& Ai = A.primitiveField();
-
-    // Only the cells that take slopes (slopeCells_) are summed, divided and
-    // read: most cells of an impact hold a solid as a trace
-    const label nCells = mesh_.nCells();
-    for (int i = 0; i < 3; ++i)
-    {
-        dAdx_[i].resize(nCells);
-        tensorField& g = dAdx_[i];
-        for (label c = 0; c < nCells; ++c)
-        {
-            if (slopeCells_[c]) g[c] = Zero;
-        }
-    }
-
-    // Adds S_i A_f to cell c's sum of direction i
-    const auto add = [this](const label c, const vector& S, const tensor& Af)
-    {
-        if (!slopeCells_[c]) return;
-        for (int i = 0; i < 3; ++i)
-        {
-            dAdx_[i][c] += S[i]*Af;
-        }
-    };
-
-    // Only the cells that take slopes need theirs: a face between two
-    // others is skipped (each cell's sum keeps its order)
-    forAll(nei, facei)
-    {
-        if (!slopeCells_[own[facei]] && !slopeCells_[nei[facei]])
-        {
-            continue;
-        }
-        const tensor Af
-        (
-            w[facei]*(Ai[own[facei]] - Ai[nei[facei]]) + Ai[nei[facei]]
-        );
-        add(own[facei], Sf[facei], Af);
-        add(nei[facei], -Sf[facei], Af);
-    }
-
-    forAll(mesh_.boundary(), patchi)
-    {
-        const fvPatch& patch = mesh_.boundary()[patchi];
-        const labelUList& fc = patch.faceCells();
-        const vectorField& pSf = mesh_.Sf().boundaryField()[patchi];
-        const fvPatchTensorField& pA = A.boundaryField()[patchi];
-        if (pA.coupled())
-        {
-            const scalarField& pw = mesh_.weights().boundaryField()[patchi];
-            const tensorField nbr(pA.patchNeighbourField());
-            forAll(fc, facei)
-            {
-                add
-                (
-                    fc[facei],
-                    pSf[facei],
-                    pw[facei]*Ai[fc[facei]] + (1 - pw[facei])*nbr[facei]
-                );
-            }
-        }
-        else
-        {
-            forAll(fc, facei)
-            {
-                add(fc[facei], pSf[facei], pA[facei]);
-            }
-        }
-    }
-
-    const scalarField& V = mesh_.V();
-    for (int i = 0; i < 3; ++i)
-    {
-        forAll(V, c)
-        {
-            if (slopeCells_[c]) dAdx_[i][c] /= V[c];
-        }
-    }
-}
 
 
 void Foam::reconstructions::MUSCLHancock::extentAlong
@@ -474,7 +378,7 @@ void Foam::reconstructions::MUSCLHancock::describe(Ostream& os) const
     os  << "MUSCL-Hancock, velocity limiter "
         << (gradUCalc_.limited() ? "cellLimited" : "none")
         << ", cobasis limiter "
-        << (cobasisLimiter_.valid() ? "cellLimited" : "none");
+        << (cobasisGradient_.limited() ? "cellLimited" : "none");
     if (relaxPredictor_)
     {
         os  << ", plastic return in the predictor";
@@ -525,7 +429,6 @@ void Foam::reconstructions::MUSCLHancock::update
 
     scalarField& minAlpha = minAlpha_;
     scalarField& maxAlpha = maxAlpha_;
-    tensorField& limiterA = limiterA_;
 
     for (label k = 0; k < nPhases_; ++k)
     {
@@ -593,40 +496,7 @@ void Foam::reconstructions::MUSCLHancock::update
         // conditions), limited with mirror neighbours
         if (ph.solid())
         {
-            cobasisSlopes(A);
-        }
-        if (ph.solid() && cobasisLimiter_.valid())
-        {
-            cobasisLimiter_->factors
-            (
-                A,
-                [this](const label celli, const vector& dx)
-                {
-                    tensor dA;
-                    for (direction cmpt = 0; cmpt < 9; ++cmpt)
-                    {
-                        dA[cmpt] =
-                            dx.x()*dAdx_[0][celli][cmpt]
-                          + dx.y()*dAdx_[1][celli][cmpt]
-                          + dx.z()*dAdx_[2][celli][cmpt];
-                    }
-                    return dA;
-                },
-                limiterA,
-                &slopeCells_
-            );
-            for (int i = 0; i < 3; ++i)
-            {
-                tensorField& g = dAdx_[i];
-                forAll(g, celli)
-                {
-                    if (!slopeCells_[celli]) continue;
-                    for (direction cmpt = 0; cmpt < 9; ++cmpt)
-                    {
-                        g[celli][cmpt] *= limiterA[celli][cmpt];
-                    }
-                }
-            }
+            cobasisGradient_.calculate(A, slopeCells_);
         }
 
         for (label c = 0; c < nCells; ++c)
@@ -688,7 +558,7 @@ void Foam::reconstructions::MUSCLHancock::update
                 solidSlopes& so = solidSlopes_[k][c];
                 for (int i = 0; i < 3; ++i)
                 {
-                    so.gA[i] = toEigen(dAdx_[i][c]);
+                    so.gA[i] = toEigen(cobasisGradient_.dAdx(i)[c]);
                 }
             }
             // Primitive equations, with L_ij = du_i/dx_j = gradU(j, i)
