@@ -46,6 +46,7 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
 )
 :
     reconstruction(phases, cells, dict),
+    predictor_(phases, dict),
     alphaCompression_(dict.getOrDefault<scalar>("alphaCompression", 1)),
     thinc_(),
     thincFullRange_(false),
@@ -62,7 +63,6 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
         )
      == limiter::cellLimited
     ),
-    relaxPredictor_(dict.getOrDefault<Switch>("predictorRelaxation", true)),
     slopes_(nPhases_),
     alphaScratch_(nPhases_),
     slopeCells_(mesh_.nCells(), false),
@@ -251,7 +251,7 @@ void Foam::reconstructions::MUSCLHancock::setProfile
     const vector& g,
     const vector& U,
     const scalar halfDt,
-    cellSlopes& sl,
+    phaseSlopes& sl,
     profile& pr
 ) const
 {
@@ -299,7 +299,7 @@ void Foam::reconstructions::MUSCLHancock::setProfile
 
     // The time-centred cell value: the mean of the profile moved by half
     // a step
-    sl.dtAlpha =
+    sl.alpha.dt =
         pr.aLow + pr.aRange*thinc_->mean(-pr.xiShift, 1 - pr.xiShift, pr.xiJ)
       - alpha;
 }
@@ -327,35 +327,6 @@ Foam::scalar Foam::reconstructions::MUSCLHancock::profileFaceAlpha
 }
 
 
-void Foam::reconstructions::MUSCLHancock::relaxPredicted
-(
-    const label k,
-    const label c,
-    const cobasis::matrix& Ac,
-    const scalar rho,
-    const scalar p,
-    const scalar halfDt,
-    cobasis::matrix& dtA
-) const
-{
-    const phaseModel& phase = phases_[k];
-    cobasis::matrix A(Ac + dtA);
-    if (!(A.determinant() > 0))
-    {
-        // Inadmissible: the face states fall back to the cell's
-        return;
-    }
-
-    // The phase's plastic step over the half step (inelasticModel)
-    scalar carried[phaseModel::maxCarried];
-    phase.inelasticState(c, carried);
-    if (phase.inelastic().predict(A, carried, rho, p, halfDt))
-    {
-        dtA = A - Ac;
-    }
-}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::reconstructions::MUSCLHancock::centreAlphas
@@ -379,10 +350,7 @@ void Foam::reconstructions::MUSCLHancock::describe(Ostream& os) const
         << (gradUCalc_.limited() ? "cellLimited" : "none")
         << ", cobasis limiter "
         << (cobasisGradient_.limited() ? "cellLimited" : "none");
-    if (relaxPredictor_)
-    {
-        os  << ", plastic return in the predictor";
-    }
+    predictor_.describe(os);
     if (alphaCompression_ > 1)
     {
         os  << ", volume fraction slopes steepened by " << alphaCompression_;
@@ -501,16 +469,18 @@ void Foam::reconstructions::MUSCLHancock::update
 
         for (label c = 0; c < nCells; ++c)
         {
-            cellSlopes& sl = slopes_[k][c];
+            phaseSlopes& sl = slopes_[k][c];
+            solidSlopes* so = ph.solid() ? &solidSlopes_[k][c] : nullptr;
+            const vector* a = acceleration ? &(*acceleration)[c] : nullptr;
             const cobasis::vector u(toEigen(U[c]));
 
             // A cell the step takes at first order (the a posteriori
             // fall-back) keeps only the velocity gradient, as the firstOrder
             // reconstruction does
             const bool first = firstOrderCell(c);
-            sl.gAlpha =
+            sl.alpha.g =
                 first ? cobasis::vector::Zero() : toEigen(gAlpha[c]);
-            sl.dtAlpha = -halfDt*u.dot(sl.gAlpha);
+            sl.alpha.dt = -halfDt*u.dot(sl.alpha.g);
             sl.minor = phases_.regimes().thin(minAlpha[c]);
             sl.sharp = false;
             if (thinc_.valid() && !first)
@@ -532,69 +502,27 @@ void Foam::reconstructions::MUSCLHancock::update
                 // states read the zero increments
                 sl.gRho.setZero();
                 sl.gP.setZero();
-                if (ph.solid())
+                if (so && first)
                 {
-                    solidSlopes& so = solidSlopes_[k][c];
-                    if (first)
-                    {
-                        for (int i = 0; i < 3; ++i) so.gA[i].setZero();
-                    }
-                    so.dtA.setZero();
+                    for (int i = 0; i < 3; ++i) so->gA[i].setZero();
                 }
-                sl.dtRho = 0;
-                sl.dtP = 0;
-                sl.dtU.setZero();
-                if (acceleration)
-                {
-                    sl.dtU = halfDt*toEigen((*acceleration)[c]);
-                }
+                hancockPredictor::withoutSlopes(halfDt, a, sl, so);
                 continue;
             }
 
             sl.gRho = toEigen(gRho[c]);
             sl.gP = toEigen(gP[c]);
-            if (ph.solid())
+            if (so)
             {
-                solidSlopes& so = solidSlopes_[k][c];
                 for (int i = 0; i < 3; ++i)
                 {
-                    so.gA[i] = toEigen(cobasisGradient_.dAdx(i)[c]);
+                    so->gA[i] = toEigen(cobasisGradient_.dAdx(i)[c]);
                 }
             }
-            // Primitive equations, with L_ij = du_i/dx_j = gradU(j, i)
-            const cobasis::matrix L(toEigen(gradU[c]).transpose());
-            const double divU = L.trace();
-            const cobasis::matrix Ac(toEigen(A[c]));
-
-            cobasis::vector divSigma(-sl.gP);
-            if (ph.solid())
-            {
-                ph.elastic().addDivS(Ac, solidSlopes_[k][c].gA, divSigma);
-            }
-
-            sl.dtRho = -halfDt*(u.dot(sl.gRho) + rho[c]*divU);
-            sl.dtP =
-                -halfDt
-               *(u.dot(sl.gP) + rho[c]*ph.eos().c2(rho[c], p[c])*divU);
-            sl.dtU = -halfDt*(L*u - divSigma/rho[c]);
-            if (acceleration)
-            {
-                sl.dtU += halfDt*toEigen((*acceleration)[c]);
-            }
-            if (ph.solid())
-            {
-                solidSlopes& so = solidSlopes_[k][c];
-                so.dtA =
-                    -halfDt
-                   *(
-                        u(0)*so.gA[0] + u(1)*so.gA[1] + u(2)*so.gA[2]
-                      + Ac*L
-                    );
-                if (relaxPredictor_)
-                {
-                    relaxPredicted(k, c, Ac, rho[c], p[c], halfDt, so.dtA);
-                }
-            }
+            predictor_.predict
+            (
+                k, c, halfDt, rho[c], p[c], U[c], A[c], gradU[c], a, sl, so
+            );
         }
     }
 
@@ -611,7 +539,7 @@ void Foam::reconstructions::MUSCLHancock::update
             const scalar a = phases_.alpha(k)[c];
             alpha[k] =
                 !phases_.regimes().thin(a)
-              ? min(max(a + slopes_[k][c].dtAlpha, 0.0), 1.0)
+              ? min(max(a + slopes_[k][c].alpha.dt, 0.0), 1.0)
               : a;
             if (alpha[k] > alpha[main]) main = k;
         }
@@ -650,11 +578,11 @@ void Foam::reconstructions::MUSCLHancock::faceState
     {
         if (k == main) continue;
         const scalar ac = phases_.alpha(k)[celli];
-        const cellSlopes& sl = slopes_[k][celli];
+        const phaseSlopes& sl = slopes_[k][celli];
         const scalar af =
             sl.sharp
           ? profileFaceAlpha(profiles_[k][celli], celli, facei, d)
-          : ac + sl.gAlpha.dot(de) + sl.dtAlpha;
+          : sl.alpha.face(ac, de);
         alphaScratch_[k] =
             phases_.regimes().thin(ac)
           ? ac
@@ -674,7 +602,7 @@ void Foam::reconstructions::MUSCLHancock::faceState
     const bool first = firstOrderCell(celli);
     for (label k = 0; k < nPhases_; ++k)
     {
-        const cellSlopes& sl = slopes_[k][celli];
+        const phaseSlopes& sl = slopes_[k][celli];
         phaseSide& sk = s[k];
         sk.alpha = alphaScratch_[k];
 
@@ -756,10 +684,10 @@ void Foam::reconstructions::MUSCLHancock::centreState
         sk.a = cells_.a(k, celli);
         cellCarried(k, celli, sk);
 
-        const cellSlopes& sl = slopes_[k][celli];
+        const phaseSlopes& sl = slopes_[k][celli];
         if (!phases_.regimes().thin(sk.alpha))
         {
-            sk.alpha = min(max(sk.alpha + sl.dtAlpha, 0.0), 1.0);
+            sk.alpha = min(max(sk.alpha + sl.alpha.dt, 0.0), 1.0);
         }
 
         const hyperelasticPhase& ph = phases_.phase(k);
