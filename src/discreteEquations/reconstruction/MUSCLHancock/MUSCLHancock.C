@@ -16,26 +16,6 @@ namespace reconstructions
 }
 }
 
-namespace
-{
-    // discreteEquations alphaReconstruction
-    enum class alphaProfile { linear, THINC };
-    const Foam::Enum<alphaProfile> alphaProfileNames
-    ({
-        {alphaProfile::linear, "linear"},
-        {alphaProfile::THINC, "THINC"}
-    });
-
-    // discreteEquations THINCCoeffs range
-    enum class profileRange { neighbours, full };
-    const Foam::Enum<profileRange> profileRangeNames
-    ({
-        {profileRange::neighbours, "neighbours"},
-        {profileRange::full, "full"}
-    });
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::reconstructions::MUSCLHancock::MUSCLHancock
@@ -47,9 +27,7 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
 :
     reconstruction(phases, cells, dict),
     predictor_(phases, dict),
-    alphaCompression_(dict.getOrDefault<scalar>("alphaCompression", 1)),
-    thinc_(),
-    thincFullRange_(false),
+    alphaProfile_(alphaProfile::New(phases, dict)),
     cobasisGradient_
     (
         mesh_,
@@ -69,61 +47,13 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
     alphaCells_(mesh_.nCells(), false),
     gauss_(mesh_)
 {
-    if (!(alphaCompression_ >= 1 && alphaCompression_ <= 4))
-    {
-        FatalIOErrorInFunction(dict)
-            << "discreteEquations alphaCompression " << alphaCompression_
-            << " is not in [1, 4]" << exit(FatalIOError);
-    }
-
-    const alphaProfile profile = readOption
-    (
-        dict, "alphaReconstruction", alphaProfileNames, alphaProfile::linear,
-        "discreteEquations"
-    );
-    if (profile == alphaProfile::THINC)
-    {
-        if (alphaCompression_ != 1)
-        {
-            FatalIOErrorInFunction(dict)
-                << "discreteEquations: alphaCompression " << alphaCompression_
-                << " steepens linear volume fraction slopes; with"
-                << " alphaReconstruction THINC leave it out (or 1)"
-                << exit(FatalIOError);
-        }
-        const dictionary& coeffs = dict.optionalSubDict("THINCCoeffs");
-        const scalar beta = coeffs.getOrDefault<scalar>("beta", 2.5);
-        thincFullRange_ =
-            readOption
-            (
-                coeffs, "range", profileRangeNames, profileRange::neighbours,
-                "discreteEquations THINCCoeffs"
-            )
-         == profileRange::full;
-        if (!(beta >= 0.5 && beta <= 10))
-        {
-            FatalIOErrorInFunction(dict)
-                << "discreteEquations THINCCoeffs beta " << beta
-                << " is not in [0.5, 10]" << exit(FatalIOError);
-        }
-        thinc_.reset(new THINC(beta));
-    }
-
     solidSlopes_.resize(nPhases_);
-    if (thinc_.valid())
-    {
-        profiles_.resize(nPhases_);
-    }
     for (label k = 0; k < nPhases_; ++k)
     {
         slopes_[k].resize(mesh_.nCells());
         if (phases.phase(k).solid())
         {
             solidSlopes_[k].resize(mesh_.nCells());
-        }
-        if (thinc_.valid())
-        {
-            profiles_[k].resize(mesh_.nCells());
         }
     }
 }
@@ -170,163 +100,6 @@ void Foam::reconstructions::MUSCLHancock::alphaRange
 
 
 
-void Foam::reconstructions::MUSCLHancock::compressAlphaSlopes
-(
-    const volScalarField& alpha,
-    const scalarField& aMin,
-    const scalarField& aMax,
-    vectorField& g
-) const
-{
-    const label nCells = mesh_.nCells();
-    const labelUList& own = mesh_.owner();
-    const labelUList& nei = mesh_.neighbour();
-    const vectorField& Cf = mesh_.faceCentres();
-    const vectorField& C = mesh_.cellCentres();
-
-    // Largest factor of g that keeps every face value in range
-    scalarField factor(nCells, alphaCompression_);
-    const auto limit = [&](const label c, const vector& d)
-    {
-        const scalar delta = g[c] & d;
-        if (delta > VSMALL)
-        {
-            factor[c] = min(factor[c], (aMax[c] - alpha[c])/delta);
-        }
-        else if (delta < -VSMALL)
-        {
-            factor[c] = min(factor[c], (aMin[c] - alpha[c])/delta);
-        }
-    };
-    forAll(nei, facei)
-    {
-        limit(own[facei], Cf[facei] - C[own[facei]]);
-        limit(nei[facei], Cf[facei] - C[nei[facei]]);
-    }
-    forAll(mesh_.boundary(), patchi)
-    {
-        if (phases_.boundary().passive(patchi)) continue;
-        const fvPatch& patch = mesh_.boundary()[patchi];
-        const labelUList& fc = patch.faceCells();
-        forAll(fc, i)
-        {
-            limit(fc[i], Cf[patch.start() + i] - C[fc[i]]);
-        }
-    }
-
-    forAll(g, c)
-    {
-        g[c] *= max(factor[c], scalar(0));
-    }
-}
-
-
-
-void Foam::reconstructions::MUSCLHancock::extentAlong
-(
-    const labelUList& pointLabels,
-    const vector& n,
-    scalar& lo,
-    scalar& hi
-) const
-{
-    const pointField& pts = mesh_.points();
-    lo = GREAT;
-    hi = -GREAT;
-    for (const label pi : pointLabels)
-    {
-        const scalar x = n & pts[pi];
-        lo = min(lo, x);
-        hi = max(hi, x);
-    }
-}
-
-
-void Foam::reconstructions::MUSCLHancock::setProfile
-(
-    const label c,
-    const scalar alpha,
-    const scalar aMin,
-    const scalar aMax,
-    const vector& g,
-    const vector& U,
-    const scalar halfDt,
-    phaseSlopes& sl,
-    profile& pr
-) const
-{
-    const scalar aRange = aMax - aMin;
-    const scalar magG = mag(g);
-    if
-    (
-        phases_.regimes().thin(alpha)
-     || aRange < phases_.regimes().alphaMinor()
-     || magG < VSMALL
-    )
-    {
-        return;
-    }
-    // Normalised value: an interface cell lies strictly within the range
-    const scalar aBar = (alpha - aMin)/aRange;
-    if (!(aBar > 1e-4 && aBar < 1 - 1e-4))
-    {
-        return;
-    }
-
-    const vector n(g/magG);
-    scalar lo, hi;
-    extentAlong(mesh_.cellPoints()[c], n, lo, hi);
-
-    sl.sharp = true;
-    pr.nAlpha = toEigen(n);
-    pr.xLow = lo;
-    pr.h = hi - lo;
-    pr.xiShift = (U & n)*halfDt/pr.h;
-    if (thincFullRange_)
-    {
-        // The whole step from 0 to 1 (Xiao et al.'s profile): the cell
-        // mean alone places the jump
-        pr.xiJ = thinc_->jump(min(max(alpha, 1e-4), 1 - 1e-4));
-        pr.aLow = 0;
-        pr.aRange = 1;
-    }
-    else
-    {
-        pr.xiJ = thinc_->jump(aBar);
-        pr.aLow = aMin;
-        pr.aRange = aRange;
-    }
-
-    // The time-centred cell value: the mean of the profile moved by half
-    // a step
-    sl.alpha.dt =
-        pr.aLow + pr.aRange*thinc_->mean(-pr.xiShift, 1 - pr.xiShift, pr.xiJ)
-      - alpha;
-}
-
-
-Foam::scalar Foam::reconstructions::MUSCLHancock::profileFaceAlpha
-(
-    const profile& pr,
-    const label celli,
-    const label facei,
-    const vector& d
-) const
-{
-    // The face's spread along n from its points, its centre from d (on a
-    // wedge face d is the centre turned into the cell's plane)
-    const vector n(pr.nAlpha(0), pr.nAlpha(1), pr.nAlpha(2));
-    scalar lo, hi;
-    extentAlong(mesh_.faces()[facei], n, lo, hi);
-    const scalar xiC =
-        ((n & (mesh_.cellCentres()[celli] + d)) - pr.xLow)/pr.h - pr.xiShift;
-    const scalar halfW = 0.5*(hi - lo)/pr.h;
-    return
-        pr.aLow
-      + pr.aRange*thinc_->mean(xiC - halfW, xiC + halfW, pr.xiJ);
-}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::reconstructions::MUSCLHancock::centreAlphas
@@ -351,16 +124,7 @@ void Foam::reconstructions::MUSCLHancock::describe(Ostream& os) const
         << ", cobasis limiter "
         << (cobasisGradient_.limited() ? "cellLimited" : "none");
     predictor_.describe(os);
-    if (alphaCompression_ > 1)
-    {
-        os  << ", volume fraction slopes steepened by " << alphaCompression_;
-    }
-    if (thinc_.valid())
-    {
-        os  << ", THINC volume fractions (beta " << thinc_->beta()
-            << (thincFullRange_ ? ", range full" : ", range neighbours")
-            << ")";
-    }
+    alphaProfile_->describe(os);
 }
 
 
@@ -453,10 +217,7 @@ void Foam::reconstructions::MUSCLHancock::update
             slopes(phases_.p(k), gP_, &slopeCells_);
         }
         vectorField& gAlpha = gAlpha_;
-        if (alphaCompression_ > 1 && nPhases_ > 1)
-        {
-            compressAlphaSlopes(alpha, minAlpha, maxAlpha, gAlpha);
-        }
+        alphaProfile_->correctSlopes(alpha, minAlpha, maxAlpha, gAlpha);
         const vectorField& gRho = gRho_;
         const vectorField& gP = gP_;
 
@@ -472,25 +233,18 @@ void Foam::reconstructions::MUSCLHancock::update
             phaseSlopes& sl = slopes_[k][c];
             solidSlopes* so = ph.solid() ? &solidSlopes_[k][c] : nullptr;
             const vector* a = acceleration ? &(*acceleration)[c] : nullptr;
-            const cobasis::vector u(toEigen(U[c]));
 
             // A cell the step takes at first order (the a posteriori
             // fall-back) keeps only the velocity gradient, as the firstOrder
             // reconstruction does
             const bool first = firstOrderCell(c);
-            sl.alpha.g =
-                first ? cobasis::vector::Zero() : toEigen(gAlpha[c]);
-            sl.alpha.dt = -halfDt*u.dot(sl.alpha.g);
             sl.minor = phases_.regimes().thin(minAlpha[c]);
-            sl.sharp = false;
-            if (thinc_.valid() && !first)
-            {
-                setProfile
+            sl.sharp =
+                alphaProfile_->setProfile
                 (
-                    c, alpha[c], minAlpha[c], maxAlpha[c], gAlpha[c], U[c],
-                    halfDt, sl, profiles_[k][c]
+                    k, c, first, alpha[c], minAlpha[c], maxAlpha[c],
+                    gAlpha[c], U[c], halfDt, sl.alpha
                 );
-            }
 
             if (sl.minor || first)
             {
@@ -581,7 +335,7 @@ void Foam::reconstructions::MUSCLHancock::faceState
         const phaseSlopes& sl = slopes_[k][celli];
         const scalar af =
             sl.sharp
-          ? profileFaceAlpha(profiles_[k][celli], celli, facei, d)
+          ? alphaProfile_->profileFaceAlpha(k, celli, facei, d)
           : sl.alpha.face(ac, de);
         alphaScratch_[k] =
             phases_.regimes().thin(ac)
