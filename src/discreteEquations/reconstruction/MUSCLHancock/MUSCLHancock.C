@@ -16,6 +16,7 @@ namespace reconstructions
 }
 }
 
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::reconstructions::MUSCLHancock::MUSCLHancock
@@ -42,12 +43,12 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
      == limiter::cellLimited
     ),
     slopes_(nPhases_),
+    solidSlopes_(nPhases_),
     alphaScratch_(nPhases_),
     slopeCells_(mesh_.nCells(), false),
     alphaCells_(mesh_.nCells(), false),
     gauss_(mesh_)
 {
-    solidSlopes_.resize(nPhases_);
     for (label k = 0; k < nPhases_; ++k)
     {
         slopes_[k].resize(mesh_.nCells());
@@ -99,8 +100,205 @@ void Foam::reconstructions::MUSCLHancock::alphaRange
 }
 
 
+void Foam::reconstructions::MUSCLHancock::markSlopeCells(const label k)
+{
+    // The cells that take slopes of rho, p and A: not minor, not first
+    // order (update zeroes the others). The cells that read the alpha
+    // slope: at or above alphaMinor in the cell, not first order (below,
+    // a phase keeps its cell value at the faces and in the time-centred
+    // state, and takes no profile but the linear one)
+    const volScalarField& alpha = phases_.alpha(k);
+    forAll(slopeCells_, c)
+    {
+        const bool first = firstOrderCell(c);
+        slopeCells_[c] = !phases_.regimes().thin(minAlpha_[c]) && !first;
+        alphaCells_[c] = !phases_.regimes().thin(alpha[c]) && !first;
+    }
+}
+
+
+void Foam::reconstructions::MUSCLHancock::slopes
+(
+    const volScalarField& vf,
+    vectorField& g,
+    const boolList* active
+)
+{
+    if (cellLimitedGauss::matches(mesh_, vf.name()))
+    {
+        gauss_.grad(vf, g, active);
+    }
+    else
+    {
+        g = fvc::grad(vf)().primitiveField();
+    }
+}
+
+
+void Foam::reconstructions::MUSCLHancock::scalarSlopes(const label k)
+{
+    // fvSchemes' gradSchemes; the tutorials' "cellLimited Gauss linear 1"
+    // by cellLimitedGauss, the same values without temporary fields,
+    // computed and limited only where read (zero elsewhere). A single
+    // phase has alpha = 1: no slope
+    if (nPhases_ > 1)
+    {
+        slopes(phases_.alpha(k), gAlpha_, &alphaCells_);
+    }
+    else
+    {
+        gAlpha_.setSize(mesh_.nCells());
+        gAlpha_ = Zero;
+    }
+
+    const volScalarField& rho = phases_.rho(k);
+    const volScalarField& p = phases_.p(k);
+    if
+    (
+        cellLimitedGauss::matches(mesh_, rho.name())
+     && cellLimitedGauss::matches(mesh_, p.name())
+    )
+    {
+        // Both in one pass over the faces (the same values)
+        gauss_.grad(rho, p, gRho_, gP_, &slopeCells_);
+    }
+    else
+    {
+        slopes(rho, gRho_, &slopeCells_);
+        slopes(p, gP_, &slopeCells_);
+    }
+}
+
+
+void Foam::reconstructions::MUSCLHancock::setCellSlopes
+(
+    const label k,
+    const scalar halfDt,
+    const vectorField* acceleration
+)
+{
+    const bool solid = phases_.phase(k).solid();
+    const scalarField& alpha = phases_.alpha(k).primitiveField();
+    const scalarField& rho = phases_.rho(k).primitiveField();
+    const scalarField& p = phases_.p(k).primitiveField();
+    const vectorField& U = phases_.U().primitiveField();
+    const tensorField& A = phases_.A(k).primitiveField();
+
+    forAll(alpha, c)
+    {
+        phaseSlopes& sl = slopes_[k][c];
+        solidSlopes* so = solid ? &solidSlopes_[k][c] : nullptr;
+        const vector* a = acceleration ? &(*acceleration)[c] : nullptr;
+
+        // A cell the step takes at first order (the a posteriori
+        // fall-back) keeps only the velocity gradient, as the firstOrder
+        // reconstruction does
+        const bool first = firstOrderCell(c);
+        sl.minor = phases_.regimes().thin(minAlpha_[c]);
+        sl.sharp =
+            alphaProfile_->setProfile
+            (
+                k, c, first, alpha[c], minAlpha_[c], maxAlpha_[c],
+                gAlpha_[c], U[c], halfDt, sl.alpha
+            );
+
+        if (sl.minor || first)
+        {
+            // A first-order cell's faces read the velocity slope, gradU_,
+            // and the zero slopes of the others; a minor phase's face
+            // states are its cell state (faceState), so its cobasis slopes
+            // are left as they are (most cells of an impact hold a solid
+            // as a trace). The time-centred states read the zero
+            // increments
+            sl.gRho.setZero();
+            sl.gP.setZero();
+            if (so && first)
+            {
+                for (int i = 0; i < 3; ++i) so->gA[i].setZero();
+            }
+            hancockPredictor::withoutSlopes(halfDt, a, sl, so);
+            continue;
+        }
+
+        sl.gRho = toEigen(gRho_[c]);
+        sl.gP = toEigen(gP_[c]);
+        if (so)
+        {
+            for (int i = 0; i < 3; ++i)
+            {
+                so->gA[i] = toEigen(cobasisGradient_.dAdx(i)[c]);
+            }
+        }
+        predictor_.predict
+        (
+            k, c, halfDt, rho[c], p[c], U[c], A[c], gradU_[c], a, sl, so
+        );
+    }
+}
+
+
+void Foam::reconstructions::MUSCLHancock::closeCentreAlphas()
+{
+    const label nCells = mesh_.nCells();
+    centreAlpha_.resize(nCells*nPhases_);
+    for (label c = 0; c < nCells; ++c)
+    {
+        double* alpha = &centreAlpha_[c*nPhases_];
+        scalar sumAlpha = 0;
+        label main = 0;
+        for (label k = 0; k < nPhases_; ++k)
+        {
+            const scalar a = phases_.alpha(k)[c];
+            alpha[k] =
+                !phases_.regimes().thin(a)
+              ? min(max(a + slopes_[k][c].alpha.dt, 0.0), 1.0)
+              : a;
+            if (alpha[k] > alpha[main]) main = k;
+        }
+        for (label k = 0; k < nPhases_; ++k)
+        {
+            if (k != main) sumAlpha += alpha[k];
+        }
+        alpha[main] = 1 - sumAlpha;
+    }
+}
+
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::reconstructions::MUSCLHancock::update
+(
+    const scalar dt,
+    const vectorField* acceleration
+)
+{
+    gradUCalc_.calculate(phases_.U(), gradU_);
+
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        const volScalarField& alpha = phases_.alpha(k);
+
+        // The minor-phase rule (below alphaMinor in the cell or any
+        // neighbour) and the cells whose slopes are read
+        alphaRange(alpha, minAlpha_, maxAlpha_);
+        markSlopeCells(k);
+
+        // The limited slopes: alpha (as its profile takes it), rho, p and
+        // a solid's cobasis
+        scalarSlopes(k);
+        alphaProfile_->correctSlopes(alpha, minAlpha_, maxAlpha_, gAlpha_);
+        if (phases_.phase(k).solid())
+        {
+            cobasisGradient_.calculate(phases_.A(k), slopeCells_);
+        }
+
+        // Per cell: alpha's profile, the slopes, the half-step increments
+        setCellSlopes(k, 0.5*dt, acceleration);
+    }
+
+    closeCentreAlphas();
+}
+
 
 void Foam::reconstructions::MUSCLHancock::centreAlphas
 (
@@ -126,185 +324,6 @@ void Foam::reconstructions::MUSCLHancock::describe(Ostream& os) const
     predictor_.describe(os);
     alphaProfile_->describe(os);
 }
-
-
-void Foam::reconstructions::MUSCLHancock::slopes
-(
-    const volScalarField& vf,
-    vectorField& g,
-    const boolList* active
-)
-{
-    if (cellLimitedGauss::matches(mesh_, vf.name()))
-    {
-        gauss_.grad(vf, g, active);
-    }
-    else
-    {
-        g = fvc::grad(vf)().primitiveField();
-    }
-}
-
-
-void Foam::reconstructions::MUSCLHancock::update
-(
-    const scalar dt,
-    const vectorField* acceleration
-)
-{
-    const label nCells = mesh_.nCells();
-    const volVectorField& Ufield = phases_.U();
-    const vectorField& U = Ufield.primitiveField();
-    gradUCalc_.calculate(Ufield, gradU_);
-    const tensorField& gradU = gradU_;
-    const scalar halfDt = 0.5*dt;
-
-    scalarField& minAlpha = minAlpha_;
-    scalarField& maxAlpha = maxAlpha_;
-
-    for (label k = 0; k < nPhases_; ++k)
-    {
-        const hyperelasticPhase& ph = phases_.phase(k);
-        const volScalarField& alpha = phases_.alpha(k);
-        const scalarField& rho = phases_.rho(k).primitiveField();
-        const scalarField& p = phases_.p(k).primitiveField();
-        const volTensorField& A = phases_.A(k);
-
-        // Minor-phase rule: below alphaMinor in the cell or any neighbour
-        alphaRange(alpha, minAlpha, maxAlpha);
-
-        // The cells that take slopes of rho, p and A: not minor, not first
-        // order (the loop below zeroes the others). The cells that read
-        // the alpha slope: at or above alphaMinor in the cell, not first
-        // order (below, a phase keeps its cell value at the faces and in
-        // the time-centred state, and takes no THINC profile)
-        for (label c = 0; c < nCells; ++c)
-        {
-            const bool first = firstOrderCell(c);
-            slopeCells_[c] = !phases_.regimes().thin(minAlpha[c]) && !first;
-            alphaCells_[c] = !phases_.regimes().thin(alpha[c]) && !first;
-        }
-
-        // Slopes of alpha, rho and p: fvSchemes' gradSchemes; the
-        // tutorials' "cellLimited Gauss linear 1" by cellLimitedGauss, the
-        // same values without temporary fields, computed and limited only
-        // where read (zero elsewhere). A single phase has alpha = 1: no
-        // slope
-        if (nPhases_ > 1)
-        {
-            slopes(alpha, gAlpha_, &alphaCells_);
-        }
-        else
-        {
-            gAlpha_.setSize(nCells);
-            gAlpha_ = Zero;
-        }
-        if
-        (
-            cellLimitedGauss::matches(mesh_, phases_.rho(k).name())
-         && cellLimitedGauss::matches(mesh_, phases_.p(k).name())
-        )
-        {
-            // Both in one pass over the faces (the same values)
-            gauss_.grad
-            (
-                phases_.rho(k), phases_.p(k), gRho_, gP_, &slopeCells_
-            );
-        }
-        else
-        {
-            slopes(phases_.rho(k), gRho_, &slopeCells_);
-            slopes(phases_.p(k), gP_, &slopeCells_);
-        }
-        vectorField& gAlpha = gAlpha_;
-        alphaProfile_->correctSlopes(alpha, minAlpha, maxAlpha, gAlpha);
-        const vectorField& gRho = gRho_;
-        const vectorField& gP = gP_;
-
-        // Cobasis slopes: Gauss linear (the face values of A's boundary
-        // conditions), limited with mirror neighbours
-        if (ph.solid())
-        {
-            cobasisGradient_.calculate(A, slopeCells_);
-        }
-
-        for (label c = 0; c < nCells; ++c)
-        {
-            phaseSlopes& sl = slopes_[k][c];
-            solidSlopes* so = ph.solid() ? &solidSlopes_[k][c] : nullptr;
-            const vector* a = acceleration ? &(*acceleration)[c] : nullptr;
-
-            // A cell the step takes at first order (the a posteriori
-            // fall-back) keeps only the velocity gradient, as the firstOrder
-            // reconstruction does
-            const bool first = firstOrderCell(c);
-            sl.minor = phases_.regimes().thin(minAlpha[c]);
-            sl.sharp =
-                alphaProfile_->setProfile
-                (
-                    k, c, first, alpha[c], minAlpha[c], maxAlpha[c],
-                    gAlpha[c], U[c], halfDt, sl.alpha
-                );
-
-            if (sl.minor || first)
-            {
-                // A first-order cell's faces read the velocity slope,
-                // gradU_, and the zero slopes of the others; a minor
-                // phase's face states are its cell state (faceState), so
-                // its cobasis slopes are left as they are (most cells of
-                // an impact hold a solid as a trace). The time-centred
-                // states read the zero increments
-                sl.gRho.setZero();
-                sl.gP.setZero();
-                if (so && first)
-                {
-                    for (int i = 0; i < 3; ++i) so->gA[i].setZero();
-                }
-                hancockPredictor::withoutSlopes(halfDt, a, sl, so);
-                continue;
-            }
-
-            sl.gRho = toEigen(gRho[c]);
-            sl.gP = toEigen(gP[c]);
-            if (so)
-            {
-                for (int i = 0; i < 3; ++i)
-                {
-                    so->gA[i] = toEigen(cobasisGradient_.dAdx(i)[c]);
-                }
-            }
-            predictor_.predict
-            (
-                k, c, halfDt, rho[c], p[c], U[c], A[c], gradU[c], a, sl, so
-            );
-        }
-    }
-
-    // Time-centred alphas: a minor phase keeps its cell value; the
-    // largest closes the sum
-    centreAlpha_.resize(nCells*nPhases_);
-    for (label c = 0; c < nCells; ++c)
-    {
-        double* alpha = &centreAlpha_[c*nPhases_];
-        scalar sumAlpha = 0;
-        label main = 0;
-        for (label k = 0; k < nPhases_; ++k)
-        {
-            const scalar a = phases_.alpha(k)[c];
-            alpha[k] =
-                !phases_.regimes().thin(a)
-              ? min(max(a + slopes_[k][c].alpha.dt, 0.0), 1.0)
-              : a;
-            if (alpha[k] > alpha[main]) main = k;
-        }
-        for (label k = 0; k < nPhases_; ++k)
-        {
-            if (k != main) sumAlpha += alpha[k];
-        }
-        alpha[main] = 1 - sumAlpha;
-    }
-}
-
 
 
 void Foam::reconstructions::MUSCLHancock::faceState
@@ -416,7 +435,6 @@ void Foam::reconstructions::MUSCLHancock::faceState
     }
     markMinor(s);
 }
-
 
 
 void Foam::reconstructions::MUSCLHancock::centreState
