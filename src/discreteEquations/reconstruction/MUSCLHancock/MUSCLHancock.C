@@ -16,25 +16,6 @@ namespace reconstructions
 }
 }
 
-namespace
-{
-    // discreteEquations alphaReconstruction
-    enum class alphaProfile { linear, THINC };
-    const Foam::Enum<alphaProfile> alphaProfileNames
-    ({
-        {alphaProfile::linear, "linear"},
-        {alphaProfile::THINC, "THINC"}
-    });
-
-    // discreteEquations THINCCoeffs range
-    enum class profileRange { neighbours, full };
-    const Foam::Enum<profileRange> profileRangeNames
-    ({
-        {profileRange::neighbours, "neighbours"},
-        {profileRange::full, "full"}
-    });
-}
-
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -46,90 +27,34 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
 )
 :
     reconstruction(phases, cells, dict),
-    alphaCompression_(dict.getOrDefault<scalar>("alphaCompression", 1)),
-    thinc_(),
-    thincFullRange_(false),
-    cobasisLimiter_(),
-    relaxPredictor_(dict.getOrDefault<Switch>("predictorRelaxation", true)),
-    slopes_(nPhases_),
-    alphaScratch_(nPhases_),
-    slopeCells_(mesh_.nCells(), false),
-    alphaCells_(mesh_.nCells(), false),
-    gauss_(mesh_)
-{
-    if (!(alphaCompression_ >= 1 && alphaCompression_ <= 4))
-    {
-        FatalIOErrorInFunction(dict)
-            << "discreteEquations alphaCompression " << alphaCompression_
-            << " is not in [1, 4]" << exit(FatalIOError);
-    }
-
-    const alphaProfile profile = readOption
+    predictor_(phases, dict),
+    alphaProfile_(alphaProfile::New(phases, dict)),
+    cobasisGradient_
     (
-        dict, "alphaReconstruction", alphaProfileNames, alphaProfile::linear,
-        "discreteEquations"
-    );
-    if (profile == alphaProfile::THINC)
-    {
-        if (alphaCompression_ != 1)
-        {
-            FatalIOErrorInFunction(dict)
-                << "discreteEquations: alphaCompression " << alphaCompression_
-                << " steepens linear volume fraction slopes; with"
-                << " alphaReconstruction THINC leave it out (or 1)"
-                << exit(FatalIOError);
-        }
-        const dictionary& coeffs = dict.optionalSubDict("THINCCoeffs");
-        const scalar beta = coeffs.getOrDefault<scalar>("beta", 2.5);
-        thincFullRange_ =
-            readOption
-            (
-                coeffs, "range", profileRangeNames, profileRange::neighbours,
-                "discreteEquations THINCCoeffs"
-            )
-         == profileRange::full;
-        if (!(beta >= 0.5 && beta <= 10))
-        {
-            FatalIOErrorInFunction(dict)
-                << "discreteEquations THINCCoeffs beta " << beta
-                << " is not in [0.5, 10]" << exit(FatalIOError);
-        }
-        thinc_.reset(new THINC(beta));
-    }
-
-    if
-    (
+        mesh_,
+        // A wall's ghost is the cell's mirror image (docs/numerics.md
+        // section 7)
+        phases.boundary().limiterNeighbours(false),
         readOption
         (
             dict, "cobasisLimiter", limiterNames, limiter::cellLimited,
             "discreteEquations"
         )
      == limiter::cellLimited
-    )
-    {
-        // A wall's ghost is the cell's mirror image (docs/numerics.md
-        // section 7)
-        cobasisLimiter_.reset
-        (
-            new cellLimiter(mesh_, phases.boundary().limiterNeighbours(false))
-        );
-    }
-
-    solidSlopes_.resize(nPhases_);
-    if (thinc_.valid())
-    {
-        profiles_.resize(nPhases_);
-    }
+    ),
+    slopes_(nPhases_),
+    solidSlopes_(nPhases_),
+    alphaScratch_(nPhases_),
+    slopeCells_(mesh_.nCells(), false),
+    alphaCells_(mesh_.nCells(), false),
+    gauss_(mesh_)
+{
     for (label k = 0; k < nPhases_; ++k)
     {
         slopes_[k].resize(mesh_.nCells());
         if (phases.phase(k).solid())
         {
             solidSlopes_[k].resize(mesh_.nCells());
-        }
-        if (thinc_.valid())
-        {
-            profiles_[k].resize(mesh_.nCells());
         }
     }
 }
@@ -175,319 +100,19 @@ void Foam::reconstructions::MUSCLHancock::alphaRange
 }
 
 
-
-void Foam::reconstructions::MUSCLHancock::compressAlphaSlopes
-(
-    const volScalarField& alpha,
-    const scalarField& aMin,
-    const scalarField& aMax,
-    vectorField& g
-) const
+void Foam::reconstructions::MUSCLHancock::markSlopeCells(const label k)
 {
-    const label nCells = mesh_.nCells();
-    const labelUList& own = mesh_.owner();
-    const labelUList& nei = mesh_.neighbour();
-    const vectorField& Cf = mesh_.faceCentres();
-    const vectorField& C = mesh_.cellCentres();
-
-    // Largest factor of g that keeps every face value in range
-    scalarField factor(nCells, alphaCompression_);
-    const auto limit = [&](const label c, const vector& d)
+    // The cells that take slopes of rho, p and A: not minor, not first
+    // order (update zeroes the others). The cells that read the alpha
+    // slope: at or above alphaMinor in the cell, not first order (below,
+    // a phase keeps its cell value at the faces and in the time-centred
+    // state, and takes no profile but the linear one)
+    const volScalarField& alpha = phases_.alpha(k);
+    forAll(slopeCells_, c)
     {
-        const scalar delta = g[c] & d;
-        if (delta > VSMALL)
-        {
-            factor[c] = min(factor[c], (aMax[c] - alpha[c])/delta);
-        }
-        else if (delta < -VSMALL)
-        {
-            factor[c] = min(factor[c], (aMin[c] - alpha[c])/delta);
-        }
-    };
-    forAll(nei, facei)
-    {
-        limit(own[facei], Cf[facei] - C[own[facei]]);
-        limit(nei[facei], Cf[facei] - C[nei[facei]]);
-    }
-    forAll(mesh_.boundary(), patchi)
-    {
-        if (phases_.boundary().passive(patchi)) continue;
-        const fvPatch& patch = mesh_.boundary()[patchi];
-        const labelUList& fc = patch.faceCells();
-        forAll(fc, i)
-        {
-            limit(fc[i], Cf[patch.start() + i] - C[fc[i]]);
-        }
-    }
-
-    forAll(g, c)
-    {
-        g[c] *= max(factor[c], scalar(0));
-    }
-}
-
-
-
-void Foam::reconstructions::MUSCLHancock::cobasisSlopes
-(
-    const volTensorField& A
-)
-{
-    const labelUList& own = mesh_.owner();
-    const labelUList& nei = mesh_.neighbour();
-    const vectorField& Sf = mesh_.Sf();
-    const scalarField& w = mesh_.weights();
-    const tensorField& Ai = A.primitiveField();
-
-    // Only the cells that take slopes (slopeCells_) are summed, divided and
-    // read: most cells of an impact hold a solid as a trace
-    const label nCells = mesh_.nCells();
-    for (int i = 0; i < 3; ++i)
-    {
-        dAdx_[i].resize(nCells);
-        tensorField& g = dAdx_[i];
-        for (label c = 0; c < nCells; ++c)
-        {
-            if (slopeCells_[c]) g[c] = Zero;
-        }
-    }
-
-    // Adds S_i A_f to cell c's sum of direction i
-    const auto add = [this](const label c, const vector& S, const tensor& Af)
-    {
-        if (!slopeCells_[c]) return;
-        for (int i = 0; i < 3; ++i)
-        {
-            dAdx_[i][c] += S[i]*Af;
-        }
-    };
-
-    // Only the cells that take slopes need theirs: a face between two
-    // others is skipped (each cell's sum keeps its order)
-    forAll(nei, facei)
-    {
-        if (!slopeCells_[own[facei]] && !slopeCells_[nei[facei]])
-        {
-            continue;
-        }
-        const tensor Af
-        (
-            w[facei]*(Ai[own[facei]] - Ai[nei[facei]]) + Ai[nei[facei]]
-        );
-        add(own[facei], Sf[facei], Af);
-        add(nei[facei], -Sf[facei], Af);
-    }
-
-    forAll(mesh_.boundary(), patchi)
-    {
-        const fvPatch& patch = mesh_.boundary()[patchi];
-        const labelUList& fc = patch.faceCells();
-        const vectorField& pSf = mesh_.Sf().boundaryField()[patchi];
-        const fvPatchTensorField& pA = A.boundaryField()[patchi];
-        if (pA.coupled())
-        {
-            const scalarField& pw = mesh_.weights().boundaryField()[patchi];
-            const tensorField nbr(pA.patchNeighbourField());
-            forAll(fc, facei)
-            {
-                add
-                (
-                    fc[facei],
-                    pSf[facei],
-                    pw[facei]*Ai[fc[facei]] + (1 - pw[facei])*nbr[facei]
-                );
-            }
-        }
-        else
-        {
-            forAll(fc, facei)
-            {
-                add(fc[facei], pSf[facei], pA[facei]);
-            }
-        }
-    }
-
-    const scalarField& V = mesh_.V();
-    for (int i = 0; i < 3; ++i)
-    {
-        forAll(V, c)
-        {
-            if (slopeCells_[c]) dAdx_[i][c] /= V[c];
-        }
-    }
-}
-
-
-void Foam::reconstructions::MUSCLHancock::extentAlong
-(
-    const labelUList& pointLabels,
-    const vector& n,
-    scalar& lo,
-    scalar& hi
-) const
-{
-    const pointField& pts = mesh_.points();
-    lo = GREAT;
-    hi = -GREAT;
-    for (const label pi : pointLabels)
-    {
-        const scalar x = n & pts[pi];
-        lo = min(lo, x);
-        hi = max(hi, x);
-    }
-}
-
-
-void Foam::reconstructions::MUSCLHancock::setProfile
-(
-    const label c,
-    const scalar alpha,
-    const scalar aMin,
-    const scalar aMax,
-    const vector& g,
-    const vector& U,
-    const scalar halfDt,
-    cellSlopes& sl,
-    profile& pr
-) const
-{
-    const scalar aRange = aMax - aMin;
-    const scalar magG = mag(g);
-    if
-    (
-        phases_.regimes().thin(alpha)
-     || aRange < phases_.regimes().alphaMinor()
-     || magG < VSMALL
-    )
-    {
-        return;
-    }
-    // Normalised value: an interface cell lies strictly within the range
-    const scalar aBar = (alpha - aMin)/aRange;
-    if (!(aBar > 1e-4 && aBar < 1 - 1e-4))
-    {
-        return;
-    }
-
-    const vector n(g/magG);
-    scalar lo, hi;
-    extentAlong(mesh_.cellPoints()[c], n, lo, hi);
-
-    sl.sharp = true;
-    pr.nAlpha = toEigen(n);
-    pr.xLow = lo;
-    pr.h = hi - lo;
-    pr.xiShift = (U & n)*halfDt/pr.h;
-    if (thincFullRange_)
-    {
-        // The whole step from 0 to 1 (Xiao et al.'s profile): the cell
-        // mean alone places the jump
-        pr.xiJ = thinc_->jump(min(max(alpha, 1e-4), 1 - 1e-4));
-        pr.aLow = 0;
-        pr.aRange = 1;
-    }
-    else
-    {
-        pr.xiJ = thinc_->jump(aBar);
-        pr.aLow = aMin;
-        pr.aRange = aRange;
-    }
-
-    // The time-centred cell value: the mean of the profile moved by half
-    // a step
-    sl.dtAlpha =
-        pr.aLow + pr.aRange*thinc_->mean(-pr.xiShift, 1 - pr.xiShift, pr.xiJ)
-      - alpha;
-}
-
-
-Foam::scalar Foam::reconstructions::MUSCLHancock::profileFaceAlpha
-(
-    const profile& pr,
-    const label celli,
-    const label facei,
-    const vector& d
-) const
-{
-    // The face's spread along n from its points, its centre from d (on a
-    // wedge face d is the centre turned into the cell's plane)
-    const vector n(pr.nAlpha(0), pr.nAlpha(1), pr.nAlpha(2));
-    scalar lo, hi;
-    extentAlong(mesh_.faces()[facei], n, lo, hi);
-    const scalar xiC =
-        ((n & (mesh_.cellCentres()[celli] + d)) - pr.xLow)/pr.h - pr.xiShift;
-    const scalar halfW = 0.5*(hi - lo)/pr.h;
-    return
-        pr.aLow
-      + pr.aRange*thinc_->mean(xiC - halfW, xiC + halfW, pr.xiJ);
-}
-
-
-void Foam::reconstructions::MUSCLHancock::relaxPredicted
-(
-    const label k,
-    const label c,
-    const cobasis::matrix& Ac,
-    const scalar rho,
-    const scalar p,
-    const scalar halfDt,
-    cobasis::matrix& dtA
-) const
-{
-    const phaseModel& phase = phases_[k];
-    cobasis::matrix A(Ac + dtA);
-    if (!(A.determinant() > 0))
-    {
-        // Inadmissible: the face states fall back to the cell's
-        return;
-    }
-
-    // The phase's plastic step over the half step (inelasticModel)
-    scalar carried[phaseModel::maxCarried];
-    phase.inelasticState(c, carried);
-    if (phase.inelastic().predict(A, carried, rho, p, halfDt))
-    {
-        dtA = A - Ac;
-    }
-}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::reconstructions::MUSCLHancock::centreAlphas
-(
-    const label c,
-    std::vector<double>& alpha
-) const
-{
-    // Computed once per cell and step by update
-    const double* a = &centreAlpha_[c*nPhases_];
-    for (label k = 0; k < nPhases_; ++k)
-    {
-        alpha[k] = a[k];
-    }
-}
-
-
-void Foam::reconstructions::MUSCLHancock::describe(Ostream& os) const
-{
-    os  << "MUSCL-Hancock, velocity limiter "
-        << (gradUCalc_.limited() ? "cellLimited" : "none")
-        << ", cobasis limiter "
-        << (cobasisLimiter_.valid() ? "cellLimited" : "none");
-    if (relaxPredictor_)
-    {
-        os  << ", plastic return in the predictor";
-    }
-    if (alphaCompression_ > 1)
-    {
-        os  << ", volume fraction slopes steepened by " << alphaCompression_;
-    }
-    if (thinc_.valid())
-    {
-        os  << ", THINC volume fractions (beta " << thinc_->beta()
-            << (thincFullRange_ ? ", range full" : ", range neighbours")
-            << ")";
+        const bool first = firstOrderCell(c);
+        slopeCells_[c] = !phases_.regimes().thin(minAlpha_[c]) && !first;
+        alphaCells_[c] = !phases_.regimes().thin(alpha[c]) && !first;
     }
 }
 
@@ -510,226 +135,111 @@ void Foam::reconstructions::MUSCLHancock::slopes
 }
 
 
-void Foam::reconstructions::MUSCLHancock::update
+void Foam::reconstructions::MUSCLHancock::scalarSlopes(const label k)
+{
+    // fvSchemes' gradSchemes; the tutorials' "cellLimited Gauss linear 1"
+    // by cellLimitedGauss, the same values without temporary fields,
+    // computed and limited only where read (zero elsewhere). A single
+    // phase has alpha = 1: no slope
+    if (nPhases_ > 1)
+    {
+        slopes(phases_.alpha(k), gAlpha_, &alphaCells_);
+    }
+    else
+    {
+        gAlpha_.setSize(mesh_.nCells());
+        gAlpha_ = Zero;
+    }
+
+    const volScalarField& rho = phases_.rho(k);
+    const volScalarField& p = phases_.p(k);
+    if
+    (
+        cellLimitedGauss::matches(mesh_, rho.name())
+     && cellLimitedGauss::matches(mesh_, p.name())
+    )
+    {
+        // Both in one pass over the faces (the same values)
+        gauss_.grad(rho, p, gRho_, gP_, &slopeCells_);
+    }
+    else
+    {
+        slopes(rho, gRho_, &slopeCells_);
+        slopes(p, gP_, &slopeCells_);
+    }
+}
+
+
+void Foam::reconstructions::MUSCLHancock::setCellSlopes
 (
-    const scalar dt,
+    const label k,
+    const scalar halfDt,
     const vectorField* acceleration
 )
 {
-    const label nCells = mesh_.nCells();
-    const volVectorField& Ufield = phases_.U();
-    const vectorField& U = Ufield.primitiveField();
-    gradUCalc_.calculate(Ufield, gradU_);
-    const tensorField& gradU = gradU_;
-    const scalar halfDt = 0.5*dt;
+    const bool solid = phases_.phase(k).solid();
+    const scalarField& alpha = phases_.alpha(k).primitiveField();
+    const scalarField& rho = phases_.rho(k).primitiveField();
+    const scalarField& p = phases_.p(k).primitiveField();
+    const vectorField& U = phases_.U().primitiveField();
+    const tensorField& A = phases_.A(k).primitiveField();
 
-    scalarField& minAlpha = minAlpha_;
-    scalarField& maxAlpha = maxAlpha_;
-    tensorField& limiterA = limiterA_;
-
-    for (label k = 0; k < nPhases_; ++k)
+    forAll(alpha, c)
     {
-        const hyperelasticPhase& ph = phases_.phase(k);
-        const volScalarField& alpha = phases_.alpha(k);
-        const scalarField& rho = phases_.rho(k).primitiveField();
-        const scalarField& p = phases_.p(k).primitiveField();
-        const volTensorField& A = phases_.A(k);
+        phaseSlopes& sl = slopes_[k][c];
+        solidSlopes* so = solid ? &solidSlopes_[k][c] : nullptr;
+        const vector* a = acceleration ? &(*acceleration)[c] : nullptr;
 
-        // Minor-phase rule: below alphaMinor in the cell or any neighbour
-        alphaRange(alpha, minAlpha, maxAlpha);
-
-        // The cells that take slopes of rho, p and A: not minor, not first
-        // order (the loop below zeroes the others). The cells that read
-        // the alpha slope: at or above alphaMinor in the cell, not first
-        // order (below, a phase keeps its cell value at the faces and in
-        // the time-centred state, and takes no THINC profile)
-        for (label c = 0; c < nCells; ++c)
-        {
-            const bool first = firstOrderCell(c);
-            slopeCells_[c] = !phases_.regimes().thin(minAlpha[c]) && !first;
-            alphaCells_[c] = !phases_.regimes().thin(alpha[c]) && !first;
-        }
-
-        // Slopes of alpha, rho and p: fvSchemes' gradSchemes; the
-        // tutorials' "cellLimited Gauss linear 1" by cellLimitedGauss, the
-        // same values without temporary fields, computed and limited only
-        // where read (zero elsewhere). A single phase has alpha = 1: no
-        // slope
-        if (nPhases_ > 1)
-        {
-            slopes(alpha, gAlpha_, &alphaCells_);
-        }
-        else
-        {
-            gAlpha_.setSize(nCells);
-            gAlpha_ = Zero;
-        }
-        if
-        (
-            cellLimitedGauss::matches(mesh_, phases_.rho(k).name())
-         && cellLimitedGauss::matches(mesh_, phases_.p(k).name())
-        )
-        {
-            // Both in one pass over the faces (the same values)
-            gauss_.grad
+        // A cell the step takes at first order (the a posteriori
+        // fall-back) keeps only the velocity gradient, as the firstOrder
+        // reconstruction does
+        const bool first = firstOrderCell(c);
+        sl.minor = phases_.regimes().thin(minAlpha_[c]);
+        sl.sharp =
+            alphaProfile_->setProfile
             (
-                phases_.rho(k), phases_.p(k), gRho_, gP_, &slopeCells_
+                k, c, first, alpha[c], minAlpha_[c], maxAlpha_[c],
+                gAlpha_[c], U[c], halfDt, sl.alpha
             );
-        }
-        else
-        {
-            slopes(phases_.rho(k), gRho_, &slopeCells_);
-            slopes(phases_.p(k), gP_, &slopeCells_);
-        }
-        vectorField& gAlpha = gAlpha_;
-        if (alphaCompression_ > 1 && nPhases_ > 1)
-        {
-            compressAlphaSlopes(alpha, minAlpha, maxAlpha, gAlpha);
-        }
-        const vectorField& gRho = gRho_;
-        const vectorField& gP = gP_;
 
-        // Cobasis slopes: Gauss linear (the face values of A's boundary
-        // conditions), limited with mirror neighbours
-        if (ph.solid())
+        if (sl.minor || first)
         {
-            cobasisSlopes(A);
+            // A first-order cell's faces read the velocity slope, gradU_,
+            // and the zero slopes of the others; a minor phase's face
+            // states are its cell state (faceState), so its cobasis slopes
+            // are left as they are (most cells of an impact hold a solid
+            // as a trace). The time-centred states read the zero
+            // increments
+            sl.gRho.setZero();
+            sl.gP.setZero();
+            if (so && first)
+            {
+                for (int i = 0; i < 3; ++i) so->gA[i].setZero();
+            }
+            hancockPredictor::withoutSlopes(halfDt, a, sl, so);
+            continue;
         }
-        if (ph.solid() && cobasisLimiter_.valid())
+
+        sl.gRho = toEigen(gRho_[c]);
+        sl.gP = toEigen(gP_[c]);
+        if (so)
         {
-            cobasisLimiter_->factors
-            (
-                A,
-                [this](const label celli, const vector& dx)
-                {
-                    tensor dA;
-                    for (direction cmpt = 0; cmpt < 9; ++cmpt)
-                    {
-                        dA[cmpt] =
-                            dx.x()*dAdx_[0][celli][cmpt]
-                          + dx.y()*dAdx_[1][celli][cmpt]
-                          + dx.z()*dAdx_[2][celli][cmpt];
-                    }
-                    return dA;
-                },
-                limiterA,
-                &slopeCells_
-            );
             for (int i = 0; i < 3; ++i)
             {
-                tensorField& g = dAdx_[i];
-                forAll(g, celli)
-                {
-                    if (!slopeCells_[celli]) continue;
-                    for (direction cmpt = 0; cmpt < 9; ++cmpt)
-                    {
-                        g[celli][cmpt] *= limiterA[celli][cmpt];
-                    }
-                }
+                so->gA[i] = toEigen(cobasisGradient_.dAdx(i)[c]);
             }
         }
-
-        for (label c = 0; c < nCells; ++c)
-        {
-            cellSlopes& sl = slopes_[k][c];
-            const cobasis::vector u(toEigen(U[c]));
-
-            // A cell the step takes at first order (the a posteriori
-            // fall-back) keeps only the velocity gradient, as the firstOrder
-            // reconstruction does
-            const bool first = firstOrderCell(c);
-            sl.gAlpha =
-                first ? cobasis::vector::Zero() : toEigen(gAlpha[c]);
-            sl.dtAlpha = -halfDt*u.dot(sl.gAlpha);
-            sl.minor = phases_.regimes().thin(minAlpha[c]);
-            sl.sharp = false;
-            if (thinc_.valid() && !first)
-            {
-                setProfile
-                (
-                    c, alpha[c], minAlpha[c], maxAlpha[c], gAlpha[c], U[c],
-                    halfDt, sl, profiles_[k][c]
-                );
-            }
-
-            if (sl.minor || first)
-            {
-                // A first-order cell's faces read the velocity slope,
-                // gradU_, and the zero slopes of the others; a minor
-                // phase's face states are its cell state (faceState), so
-                // its cobasis slopes are left as they are (most cells of
-                // an impact hold a solid as a trace). The time-centred
-                // states read the zero increments
-                sl.gRho.setZero();
-                sl.gP.setZero();
-                if (ph.solid())
-                {
-                    solidSlopes& so = solidSlopes_[k][c];
-                    if (first)
-                    {
-                        for (int i = 0; i < 3; ++i) so.gA[i].setZero();
-                    }
-                    so.dtA.setZero();
-                }
-                sl.dtRho = 0;
-                sl.dtP = 0;
-                sl.dtU.setZero();
-                if (acceleration)
-                {
-                    sl.dtU = halfDt*toEigen((*acceleration)[c]);
-                }
-                continue;
-            }
-
-            sl.gRho = toEigen(gRho[c]);
-            sl.gP = toEigen(gP[c]);
-            if (ph.solid())
-            {
-                solidSlopes& so = solidSlopes_[k][c];
-                for (int i = 0; i < 3; ++i)
-                {
-                    so.gA[i] = toEigen(dAdx_[i][c]);
-                }
-            }
-            // Primitive equations, with L_ij = du_i/dx_j = gradU(j, i)
-            const cobasis::matrix L(toEigen(gradU[c]).transpose());
-            const double divU = L.trace();
-            const cobasis::matrix Ac(toEigen(A[c]));
-
-            cobasis::vector divSigma(-sl.gP);
-            if (ph.solid())
-            {
-                ph.elastic().addDivS(Ac, solidSlopes_[k][c].gA, divSigma);
-            }
-
-            sl.dtRho = -halfDt*(u.dot(sl.gRho) + rho[c]*divU);
-            sl.dtP =
-                -halfDt
-               *(u.dot(sl.gP) + rho[c]*ph.eos().c2(rho[c], p[c])*divU);
-            sl.dtU = -halfDt*(L*u - divSigma/rho[c]);
-            if (acceleration)
-            {
-                sl.dtU += halfDt*toEigen((*acceleration)[c]);
-            }
-            if (ph.solid())
-            {
-                solidSlopes& so = solidSlopes_[k][c];
-                so.dtA =
-                    -halfDt
-                   *(
-                        u(0)*so.gA[0] + u(1)*so.gA[1] + u(2)*so.gA[2]
-                      + Ac*L
-                    );
-                if (relaxPredictor_)
-                {
-                    relaxPredicted(k, c, Ac, rho[c], p[c], halfDt, so.dtA);
-                }
-            }
-        }
+        predictor_.predict
+        (
+            k, c, halfDt, rho[c], p[c], U[c], A[c], gradU_[c], a, sl, so
+        );
     }
+}
 
-    // Time-centred alphas: a minor phase keeps its cell value; the
-    // largest closes the sum
+
+void Foam::reconstructions::MUSCLHancock::closeCentreAlphas()
+{
+    const label nCells = mesh_.nCells();
     centreAlpha_.resize(nCells*nPhases_);
     for (label c = 0; c < nCells; ++c)
     {
@@ -741,7 +251,7 @@ void Foam::reconstructions::MUSCLHancock::update
             const scalar a = phases_.alpha(k)[c];
             alpha[k] =
                 !phases_.regimes().thin(a)
-              ? min(max(a + slopes_[k][c].dtAlpha, 0.0), 1.0)
+              ? min(max(a + slopes_[k][c].alpha.dt, 0.0), 1.0)
               : a;
             if (alpha[k] > alpha[main]) main = k;
         }
@@ -753,6 +263,67 @@ void Foam::reconstructions::MUSCLHancock::update
     }
 }
 
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::reconstructions::MUSCLHancock::update
+(
+    const scalar dt,
+    const vectorField* acceleration
+)
+{
+    gradUCalc_.calculate(phases_.U(), gradU_);
+
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        const volScalarField& alpha = phases_.alpha(k);
+
+        // The minor-phase rule (below alphaMinor in the cell or any
+        // neighbour) and the cells whose slopes are read
+        alphaRange(alpha, minAlpha_, maxAlpha_);
+        markSlopeCells(k);
+
+        // The limited slopes: alpha (as its profile takes it), rho, p and
+        // a solid's cobasis
+        scalarSlopes(k);
+        alphaProfile_->correctSlopes(alpha, minAlpha_, maxAlpha_, gAlpha_);
+        if (phases_.phase(k).solid())
+        {
+            cobasisGradient_.calculate(phases_.A(k), slopeCells_);
+        }
+
+        // Per cell: alpha's profile, the slopes, the half-step increments
+        setCellSlopes(k, 0.5*dt, acceleration);
+    }
+
+    closeCentreAlphas();
+}
+
+
+void Foam::reconstructions::MUSCLHancock::centreAlphas
+(
+    const label c,
+    std::vector<double>& alpha
+) const
+{
+    // Computed once per cell and step by update
+    const double* a = &centreAlpha_[c*nPhases_];
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        alpha[k] = a[k];
+    }
+}
+
+
+void Foam::reconstructions::MUSCLHancock::describe(Ostream& os) const
+{
+    os  << "MUSCL-Hancock, velocity limiter "
+        << (gradUCalc_.limited() ? "cellLimited" : "none")
+        << ", cobasis limiter "
+        << (cobasisGradient_.limited() ? "cellLimited" : "none");
+    predictor_.describe(os);
+    alphaProfile_->describe(os);
+}
 
 
 void Foam::reconstructions::MUSCLHancock::faceState
@@ -780,11 +351,11 @@ void Foam::reconstructions::MUSCLHancock::faceState
     {
         if (k == main) continue;
         const scalar ac = phases_.alpha(k)[celli];
-        const cellSlopes& sl = slopes_[k][celli];
+        const phaseSlopes& sl = slopes_[k][celli];
         const scalar af =
             sl.sharp
-          ? profileFaceAlpha(profiles_[k][celli], celli, facei, d)
-          : ac + sl.gAlpha.dot(de) + sl.dtAlpha;
+          ? alphaProfile_->profileFaceAlpha(k, celli, facei, d)
+          : sl.alpha.face(ac, de);
         alphaScratch_[k] =
             phases_.regimes().thin(ac)
           ? ac
@@ -804,7 +375,7 @@ void Foam::reconstructions::MUSCLHancock::faceState
     const bool first = firstOrderCell(celli);
     for (label k = 0; k < nPhases_; ++k)
     {
-        const cellSlopes& sl = slopes_[k][celli];
+        const phaseSlopes& sl = slopes_[k][celli];
         phaseSide& sk = s[k];
         sk.alpha = alphaScratch_[k];
 
@@ -866,7 +437,6 @@ void Foam::reconstructions::MUSCLHancock::faceState
 }
 
 
-
 void Foam::reconstructions::MUSCLHancock::centreState
 (
     const label celli,
@@ -886,10 +456,10 @@ void Foam::reconstructions::MUSCLHancock::centreState
         sk.a = cells_.a(k, celli);
         cellCarried(k, celli, sk);
 
-        const cellSlopes& sl = slopes_[k][celli];
+        const phaseSlopes& sl = slopes_[k][celli];
         if (!phases_.regimes().thin(sk.alpha))
         {
-            sk.alpha = min(max(sk.alpha + sl.dtAlpha, 0.0), 1.0);
+            sk.alpha = min(max(sk.alpha + sl.alpha.dt, 0.0), 1.0);
         }
 
         const hyperelasticPhase& ph = phases_.phase(k);

@@ -1,0 +1,55 @@
+#include "alphaProfile.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(alphaProfile, 0);
+    defineRunTimeSelectionTable(alphaProfile, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::alphaProfile::alphaProfile
+(
+    const phaseSystem& phases,
+    const bool sharpens
+)
+:
+    phases_(phases),
+    mesh_(phases.mesh()),
+    sharpens_(sharpens)
+{}
+
+
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+Foam::scalar Foam::alphaProfile::readCompression(const dictionary& dict)
+{
+    const scalar C = dict.getOrDefault<scalar>("alphaCompression", 1);
+    if (!(C >= 1 && C <= 4))
+    {
+        FatalIOErrorInFunction(dict)
+            << "discreteEquations alphaCompression " << C
+            << " is not in [1, 4]" << exit(FatalIOError);
+    }
+    return C;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::alphaProfile::profileFaceAlpha
+(
+    const label,
+    const label,
+    const label,
+    const vector&
+) const
+{
+    FatalErrorInFunction
+        << type() << " profile has only linear slopes" << abort(FatalError);
+    return 0;
+}
+
+
+// ************************************************************************* //
