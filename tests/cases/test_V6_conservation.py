@@ -249,6 +249,7 @@ def run_tutorial(name, order, parallel, isentropic=False, before_run=None,
     if before_run:
         before_run(case)
     if parallel:
+        fc.write_decompose_dict(case, 2)
         fc.run(case, ["decomposePar"])
         solverRun.run_capped(case, "mpirun --oversubscribe -np 2 "
                              "impactFoam -parallel", max_steps,

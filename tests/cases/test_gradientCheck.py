@@ -75,8 +75,7 @@ def main():
     results = {}
     results["wedge"] = check_output(
         foamcase.run(wedge, ["gradientCheck"]))
-    foamcase.foam_dictionary(wedge, "system/decomposeParDict",
-                             "numberOfSubdomains", "2")
+    foamcase.write_decompose_dict(wedge, 2)
     foamcase.run(wedge, ["decomposePar", "-force"])
     results["parallel"] = check_output(foamcase.run(
         wedge, "mpirun -np 2 --oversubscribe gradientCheck -parallel",
