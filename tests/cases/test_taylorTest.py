@@ -68,7 +68,7 @@ def main():
     except subprocess.TimeoutExpired:
         out, code = "", None
     wall = time.time() - t0
-    end = float(fc.get_entry(case, "system/controlDict", "endTime"))
+    end = float(fc.get_entry(case, "system/runTime", "endTime"))
     times = [t for t, _ in fc.time_dirs(case)]
     ok = code == 0 and times and abs(times[-1] - end) <= 1e-6 * end \
         and "foot radius Rf" in out

@@ -101,6 +101,11 @@ def material_places(name, case):
 def phase_dict(case, phase="specimen"):
     props = read_dict(os.path.join(case, "constant", "phaseProperties"))
     d = props[phase]
+    # ./Allrun -material writes constant/specimenMaterial, included by the
+    # specimen's dictionary
+    chosen = os.path.join(case, "constant", "specimenMaterial")
+    if phase == "specimen" and os.path.isfile(chosen):
+        d.update(read_dict(chosen))
     if "material" not in d:
         return d
     for path in material_places(d["material"], case):
