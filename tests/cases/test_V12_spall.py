@@ -101,7 +101,7 @@ def run_spall(name, failure=None, modify=None):
         set_failure(case, failure)
     if modify:
         modify(case)
-    fc.run(case, ["./Allrun", "-h", "25"], log="log.Allrun")
+    fc.run(case, ["./Allrun", "-h", "0.025"], log="log.Allrun")
     return case
 
 

@@ -70,7 +70,7 @@ def run_plate(name, ratio):
     set_rule(case, ratio)
     fc.set_entry(case, "system/controlDict", "endTime", 1.6e-6)
     fc.set_entry(case, "system/controlDict", "writeInterval", 1e-7)
-    fc.run(case, ["./Allrun", "-h", "25"], log="log.Allrun")
+    fc.run(case, ["./Allrun", "-h", "0.025"], log="log.Allrun")
     return case
 
 
