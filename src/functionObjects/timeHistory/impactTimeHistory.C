@@ -90,6 +90,7 @@ bool Foam::functionObjects::impactTimeHistory::write()
     os.precision(writePrecision_);
     if (!writtenHeader_)
     {
+        os.width(0);
         os  << "# Time";
         for (const word& c : columns())
         {
