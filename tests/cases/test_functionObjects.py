@@ -30,6 +30,11 @@ not wedges, bodyExtent of the copper:
                               code, rodMeasures; 1e-10 relative: the csv's
                               12 digits); penetration equals the furthest
                               cell centre with alpha >= 1/2 along -x
+  fo_probes                   OpenFOAM's probes (libs (sampling)) on
+                              alpha.copper, rho.copper, p.copper, p, U
+                              and sigmaEq: at the written times the value
+                              of the cell holding each probe (to 1e-15 of
+                              the field's largest value)
 Case A on two processors (decomposePar, simple 2 1 1):
   fo_parallel                 the serial rows at the last time: energy
                               total to 1e-12, the extent to 1e-12 m, the
@@ -39,6 +44,11 @@ Case A on two processors (decomposePar, simple 2 1 1):
   fo_parallel_energyBudget_*, fo_parallel_wallForce_*: the checks above
                               on the parallel run (its log, its
                               reconstructed fields)
+Case C: the taylorBar at 2000 m/s with dustDensityRatio 0, 4 us (cells
+set without a payer and void cells from 2 us):
+  fo_energyBudget_unpaid      the unpaid column equals the log's energy
+                              added without a payer (not zero) and the
+                              total the log's totals, to 1e-12 relative
 Case B: the spallPlate tutorial at 25 um to 1.2 us (the target's free
 surface moving), fields every 20 ns at 17 digits, with surfaceVelocity
 along +x:
@@ -64,6 +74,7 @@ checks = Checks()
 
 END_A = 4e-6
 END_B = 1.2e-6
+END_C = 4e-6
 
 FUNCTIONS_A = """
 functions
@@ -92,8 +103,30 @@ functions
         libs            (impactFoamFunctionObjects);
         phase           copper;
     }
+    probes
+    {
+        type            probes;
+        libs            (sampling);
+        fields          (alpha.copper rho.copper p.copper p U sigmaEq);
+        probeLocations  ((1.1e-3 1.1e-3 0) (5.1e-3 2.1e-3 0)
+                         (20.1e-3 5.3e-3 0));
+    }
 }
 """
+
+FUNCTIONS_UNPAID = """
+functions
+{
+    energy
+    {
+        type            energyBudget;
+        libs            (impactFoamFunctionObjects);
+    }
+}
+"""
+
+PROBES = [(1.1e-3, 1.1e-3), (5.1e-3, 2.1e-3), (20.1e-3, 5.3e-3)]
+PROBED = ["alpha.copper", "rho.copper", "p.copper", "p", "U", "sigmaEq"]
 
 
 def read_dat(case, name):
@@ -343,6 +376,49 @@ def check_parallel(serial, serialLast, barP):
     check_wall_force(case, "fo_parallel_wallForce")
 
 
+def read_probes(case, field):
+    """Times and values (rows: time, columns: probe[, component]) of
+    OpenFOAM's probes file of field"""
+    path = os.path.join(case, "postProcessing", "probes", "0", field)
+    rows = []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#") or not line.strip():
+                continue
+            rows.append([float(v) for v in
+                         line.replace("(", " ").replace(")", " ").split()])
+    rows = np.array(rows)
+    return rows[:, 0], rows[:, 1:]
+
+
+def check_probes(case):
+    """OpenFOAM's probes on the phase fields and the output fields: the
+    value of the cell holding the probe at every written time"""
+    m = mg.read_polymesh(case)
+    r = np.hypot(m.C[:, 1], m.C[:, 2])
+    cells = [int(np.argmin((m.C[:, 0] - x)**2 + (r - y)**2))
+             for x, y in PROBES]
+    worst = 0.0
+    compared = 0
+    for field in PROBED:
+        times, values = read_probes(case, field)
+        for t, name in fc.time_dirs(case):
+            if t <= 0:
+                continue
+            i = int(np.argmin(np.abs(times - t)))
+            f = np.asarray(fc.read_field(case, name, field), dtype=float)
+            expected = f[cells].reshape(-1)
+            got = values[i]
+            scale = max(np.max(np.abs(f)), 1e-300)
+            worst = max(worst, float(np.max(np.abs(got - expected))) / scale)
+            compared += 1
+    checks.check("fo_probes", compared == len(PROBED) * 4 and worst <= 1e-15,
+                 "probes of %s at %d probes: %d field-times compared, "
+                 "largest difference %.2e of the field's largest value "
+                 "(bound 1e-15)" % (" ".join(PROBED), len(PROBES), compared,
+                                    worst))
+
+
 def surface(x, alpha, U):
     """The last fall of alpha through 1/2 along x: (position, U_x)"""
     order = np.argsort(x)
@@ -355,6 +431,44 @@ def surface(x, alpha, U):
         return x[i], U[i]
     w = (alpha[i] - 0.5) / (alpha[i] - alpha[i + 1])
     return x[i] + w * (x[i + 1] - x[i]), U[i] + w * (U[i + 1] - U[i])
+
+
+def check_unpaid():
+    """The 2000 m/s bar without the dust rule: cells set without a payer
+    and void cells from 2 us; energyBudget's unpaid column against the
+    log's"""
+    case = fc.copy_tutorial("taylorBar", "functionObjects_unpaid")
+    prepare(case, FUNCTIONS_UNPAID)
+    fc.set_entry(case, "system/controlDict", "writeInterval", "1e-6")
+    fc.set_entry(case, "constant/phaseProperties", "dustDensityRatio", "0")
+    path = os.path.join(case, "system", "setFieldsDict")
+    with open(path) as f:
+        text = f.read()
+    if "U (-227 0 0)" not in text:
+        raise fc.FoamError("no bar speed in " + path)
+    with open(path, "w") as f:
+        f.write(text.replace("U (-227 0 0)", "U (-2000 0 0)"))
+    fc.run(case, ["blockMesh"])
+    fc.run(case, "rm -rf 0 && cp -r 0.orig 0", log="log.copy")
+    fc.run(case, ["setFields"])
+    fc.run(case, ["impactFoam", "-endTime", str(END_C)])
+    energy = read_dat(case, "energy")
+    totals = log_totals(case)
+    times = [t for t, _ in fc.time_dirs(case)]
+    worst = worstUnpaid = 0.0
+    for t, (mass, e, unpaid) in zip(times, totals):
+        row = row_at(energy, t)
+        worst = max(worst, abs(row["total"] / e - 1))
+        worstUnpaid = max(worstUnpaid,
+                          abs(row["unpaid"] - unpaid) / max(unpaid, 1e-300))
+    unpaid = totals[-1][2]
+    checks.check("fo_energyBudget_unpaid",
+                 len(totals) == len(times) and unpaid > 0
+                 and worst <= 1e-12 and worstUnpaid <= 1e-12,
+                 "2000 m/s to %g s: energy added without a payer %.6g J; "
+                 "unpaid column within %.2e relative, total within %.2e "
+                 "relative of the log's at %d times (bound 1e-12)"
+                 % (END_C, unpaid, worstUnpaid, worst, len(times)))
 
 
 def check_surface_velocity():
@@ -402,10 +516,16 @@ def main():
     check_energy(case)
     last, barP = check_wall_force(case)
     check_extent(case)
+    check_probes(case)
     if shutil.which("mpirun") and shutil.which("decomposePar"):
         check_parallel(case, last, barP)
     else:
         checks.fail("fo_parallel", "mpirun or decomposePar not found")
+    try:
+        check_unpaid()
+    except fc.FoamError as e:
+        checks.fail("fo_energyBudget_unpaid", e.summary)
+        checks.note(str(e))
     try:
         check_surface_velocity()
     except fc.FoamError as e:
