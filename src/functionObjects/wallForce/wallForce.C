@@ -131,7 +131,8 @@ void Foam::functionObjects::wallForce::values(DynamicList<scalar>& row)
         }
         for (direction d = 0; d < vector::nComponents; ++d)
         {
-            row.append(v[d]);
+            // (+ 0: no negative zero from the projection)
+            row.append(v[d] + 0.0);
         }
     }
 }
