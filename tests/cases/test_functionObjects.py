@@ -35,6 +35,10 @@ not wedges, bodyExtent of the copper:
                               and sigmaEq: at the written times the value
                               of the cell holding each probe (to 1e-15 of
                               the field's largest value)
+  fo_resultsUnchanged         case A without function objects: every
+                              field file of every written time
+                              byte-identical (the ledger and the patch
+                              forces change nothing)
 Case A on two processors (decomposePar, simple 2 1 1):
   fo_parallel                 the serial rows at the last time: energy
                               total to 1e-12, the extent to 1e-12 m, the
@@ -347,6 +351,32 @@ def check_extent(case):
                                           worstPen))
 
 
+def check_unchanged(case):
+    """The same run without function objects: every field file of every
+    written time byte-identical"""
+    plain = fc.copy_tutorial("taylorBar", "functionObjects_none")
+    prepare(plain, "")
+    fc.set_entry(plain, "system/controlDict", "writeInterval", "1e-6")
+    fc.run(plain, ["blockMesh"])
+    fc.run(plain, "rm -rf 0 && cp -r 0.orig 0", log="log.copy")
+    fc.run(plain, ["setFields"])
+    fc.run(plain, ["impactFoam", "-endTime", str(END_A)])
+    compared = differ = 0
+    for t, name in fc.time_dirs(plain):
+        for f in sorted(os.listdir(os.path.join(plain, name))):
+            a = os.path.join(plain, name, f)
+            if not os.path.isfile(a):
+                continue
+            with open(a, "rb") as fa, \
+                    open(os.path.join(case, name, f), "rb") as fb:
+                differ += fa.read() != fb.read()
+            compared += 1
+    checks.check("fo_resultsUnchanged", compared > 40 and differ == 0,
+                 "%d field files at %d times compared with a run without "
+                 "function objects: %d differ"
+                 % (compared, len(fc.time_dirs(plain)), differ))
+
+
 def check_parallel(serial, serialLast, barP):
     try:
         case = taylor_case("functionObjects_parallel", parallel=True)
@@ -513,6 +543,7 @@ def main():
         checks.note(str(e))
         checks.exit()
 
+    check_unchanged(case)
     check_energy(case)
     last, barP = check_wall_force(case)
     check_extent(case)
