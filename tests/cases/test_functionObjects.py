@@ -48,6 +48,12 @@ Case A on two processors (decomposePar, simple 2 1 1):
   fo_parallel_energyBudget_*, fo_parallel_wallForce_*: the checks above
                               on the parallel run (its log, its
                               reconstructed fields)
+Bad input (taylorBar, one step):
+  fo_badInput_phase           bodyExtent with phase nosuch: FatalIOError
+                              naming the entry, the value, the valid phases
+                              and the file
+  fo_badInput_patches         wallForce with patches (nosuch): the same
+                              with the valid patches
 Case C: the taylorBar at 2000 m/s with dustDensityRatio 0, 4 us (cells
 set without a payer and void cells from 2 us):
   fo_energyBudget_unpaid      the unpaid column equals the log's energy
@@ -501,6 +507,44 @@ def check_unpaid():
                  % (END_C, unpaid, worstUnpaid, worst, len(times)))
 
 
+def check_bad_input():
+    """An unknown phase (bodyExtent) and an unknown patch (wallForce): the
+    run stops with a FatalIOError naming the entry, the value and the
+    valid ones"""
+    bad = {
+        "phase": ("bodyExtent", "phase           nosuch;",
+                  ["FOAM FATAL IO ERROR", "phase nosuch", "valid phases",
+                   "controlDict"]),
+        "patches": ("wallForce", "patches         (nosuch);",
+                    ["FOAM FATAL IO ERROR", "patches", "nosuch",
+                     "valid patches", "controlDict"]),
+    }
+    for entry, (kind, line, words) in bad.items():
+        case = fc.copy_tutorial("taylorBar", "functionObjects_bad_" + entry)
+        prepare(case, """
+functions
+{
+    bad
+    {
+        type            %s;
+        libs            (impactFoamFunctionObjects);
+        %s
+    }
+}
+""" % (kind, line))
+        fc.run(case, ["blockMesh"])
+        fc.run(case, "rm -rf 0 && cp -r 0.orig 0", log="log.copy")
+        fc.run(case, ["setFields"])
+        log = fc.run(case, ["impactFoam", "-endTime", "1e-8"], check=False)
+        with open(log) as f:
+            text = f.read()
+        missing = [w for w in words if w not in text]
+        checks.check("fo_badInput_" + entry, not missing,
+                     "%s with %s: the run stops naming %s%s"
+                     % (kind, line, ", ".join(words),
+                        "" if not missing else "; missing: %s" % missing))
+
+
 def check_surface_velocity():
     case = fc.copy_tutorial("spallPlate", "functionObjects_spall")
     fc.set_entry(case, "system/controlDict", "writePrecision", "17")
@@ -552,6 +596,10 @@ def main():
         check_parallel(case, last, barP)
     else:
         checks.fail("fo_parallel", "mpirun or decomposePar not found")
+    try:
+        check_bad_input()
+    except fc.FoamError as e:
+        checks.fail("fo_badInput", e.summary)
     try:
         check_unpaid()
     except fc.FoamError as e:
