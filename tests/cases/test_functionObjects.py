@@ -54,6 +54,16 @@ Bad input (taylorBar, one step):
                               and the file
   fo_badInput_patches         wallForce with patches (nosuch): the same
                               with the valid patches
+Rejected steps: V9's 1-D copper leaving air at 5000 m/s without the
+vacuum floor (tests/cases/badInput/copperAir), which rejects steps and
+retries them shorter until it stops, with energyBudget and wallForce on
+its open ends:
+  fo_rejectedSteps            one row per accepted step (and the start),
+                              at increasing times; the unpaid column the
+                              sum of the accepted steps' logged energy set
+                              without a payer and in void cells; the impulse of the two ends
+                              between the last writes equals the momentum
+                              change to 1e-12 (4e-16 seen)
 Case C: the taylorBar at 2000 m/s with dustDensityRatio 0, 4 us (cells
 set without a payer and void cells from 2 us):
   fo_energyBudget_unpaid      the unpaid column equals the log's energy
@@ -69,6 +79,7 @@ along +x:
 """
 import math
 import os
+import re
 import shutil
 import sys
 
@@ -120,6 +131,23 @@ functions
         fields          (alpha.copper rho.copper p.copper p U sigmaEq);
         probeLocations  ((1.1e-3 1.1e-3 0) (5.1e-3 2.1e-3 0)
                          (20.1e-3 5.3e-3 0));
+    }
+}
+"""
+
+FUNCTIONS_REJECTED = """
+functions
+{
+    energy
+    {
+        type            energyBudget;
+        libs            (impactFoamFunctionObjects);
+    }
+    force
+    {
+        type            wallForce;
+        libs            (impactFoamFunctionObjects);
+        patches         (left right);
     }
 }
 """
@@ -545,6 +573,56 @@ functions
                         "" if not missing else "; missing: %s" % missing))
 
 
+def check_rejected_steps():
+    """V9's copper leaving air at 5000 m/s without the vacuum floor: steps
+    rejected and retried with shorter steps until the run stops. One row
+    per accepted step; the impulse over the last writes equals the
+    momentum change"""
+    sys.path.insert(0, HERE)
+    import test_V9_badInput as v9
+    case = v9.prepare("functionObjects_rejected",
+                      [v9.set_velocities(-5000.0, 0.0), v9.vacuum_off])
+    fc.set_entry(case, "system/controlDict", "writePrecision", "17")
+    with open(os.path.join(case, "system", "controlDict"), "a") as f:
+        f.write(FUNCTIONS_REJECTED)
+    log = fc.run(case, ["impactFoam"], check=False)
+    with open(log) as f:
+        text = f.read()
+    attempts = len(re.findall(r"(?m)^Time = ", text))
+    rejected = len(re.findall(r"Step rejected", text))
+    stopped = "The last good fields were written" in text
+    accepted = attempts - rejected - (1 if stopped else 0)
+    force = read_dat(case, "force")
+    energy = read_dat(case, "energy")
+    t = column(force, "Time")
+    unique = bool(np.all(np.diff(t) > 0))
+    unpaidLog = sum(float(e) for e in re.findall(
+        r"(?:set without a payer|void cells).* energy added (\S+) J",
+        text))
+    unpaid = column(energy, "unpaid")[-1]
+
+    m = mg.read_polymesh(case)
+    times = fc.time_dirs(case)
+    (ta, na), (tb, nb) = times[-3], times[-1]
+    Pa = momentum(case, m, na, ["copper", "air"])
+    Pb = momentum(case, m, nb, ["copper", "air"])
+    ra, rb = row_at(force, ta), row_at(force, tb)
+    impulse = sum(rb[p + ".Ix"] - ra[p + ".Ix"] for p in ("left", "right"))
+    err = abs(impulse - (Pb[0] - Pa[0])) / abs(Pa[0])
+    checks.check("fo_rejectedSteps",
+                 stopped and rejected > 0 and unique
+                 and len(t) == accepted + 1 and len(energy[1]) == len(t)
+                 and abs(unpaid - unpaidLog) <= 1e-12 * unpaidLog
+                 and err <= 1e-12,
+                 "%d steps rejected, %d accepted, then the run stops: %d "
+                 "rows at increasing times (expected %d); unpaid %.6g J, "
+                 "the log's accepted steps %.6g J; impulse from %g to %g s "
+                 "%.10g N s, momentum change %.10g N s: %.2e of the "
+                 "momentum (bound 1e-12)"
+                 % (rejected, accepted, len(t), accepted + 1, unpaid,
+                    unpaidLog, ta, tb, impulse, Pb[0] - Pa[0], err))
+
+
 def check_surface_velocity():
     case = fc.copy_tutorial("spallPlate", "functionObjects_spall")
     fc.set_entry(case, "system/controlDict", "writePrecision", "17")
@@ -600,6 +678,10 @@ def main():
         check_bad_input()
     except fc.FoamError as e:
         checks.fail("fo_badInput", e.summary)
+    try:
+        check_rejected_steps()
+    except fc.FoamError as e:
+        checks.fail("fo_rejectedSteps", e.summary)
     try:
         check_unpaid()
     except fc.FoamError as e:
