@@ -114,8 +114,9 @@ int main(int argc, char *argv[])
         voidCells.correct();
 
         // What the step did beyond the scheme (vacuum floors, phases set
-        // without a payer, cells at first order, void cells), logged
-        report.step();
+        // without a payer, cells at first order, void cells), logged; the
+        // step recorded for function objects (stepLedger)
+        report.step(dt);
 
         phases.correctBoundaryConditions();
         phases.correctDensity();

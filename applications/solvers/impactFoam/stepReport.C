@@ -15,7 +15,8 @@ Foam::stepReport::stepReport
     relaxation_(relaxation),
     dem_(dem),
     voidCells_(voidCells),
-    unpaidTotal_(0)
+    unpaidTotal_(0),
+    ledger_(phases)
 {}
 
 
@@ -43,7 +44,7 @@ void Foam::stepReport::counts::reduce()
 }
 
 
-void Foam::stepReport::step()
+void Foam::stepReport::step(const scalar deltaT)
 {
     counts n;
     n.vacuumCells = relaxation_.nVacuum();
@@ -74,6 +75,8 @@ void Foam::stepReport::step()
         Info<< "    void cells: velocity held in " << n.voidCells
             << " cells: energy added " << n.voidEnergy << " J" << nl;
     }
+
+    ledger_.accept(deltaT, dem_.patchForces(), unpaidTotal_);
 }
 
 

@@ -27,10 +27,12 @@ Description
     (0 0 0)). Cells are grouped into slices of equal axial coordinate
     (structured meshes); in each slice the radius is where alpha falls
     through 1/2 going out from the axis (linear between cell centres), so
-    traces and mist of the phase in the air do not count. The length integrates alpha along the row of
-    cells next to the axis; the undeformed length is the part of the rod
+    traces and mist of the phase in the air do not count. The length
+    integrates alpha along the row of cells next to the axis; the undeformed length is the part of the rod
     whose radius is within -tolerance (default 0.01) of the initial radius
     (-R0, default: the largest radius at the first time processed).
+    The length, radii and zMin are measured by rodMeasures, the code of
+    the bodyExtent function object (src/functionObjects).
 
 Usage
     rodProfile -phase copper [-axis '(1 0 0)'] [-origin '(0 0 0)']
@@ -40,56 +42,9 @@ Usage
 
 #include "fvCFD.H"
 #include "phaseSystem.H"
-#include "wedgePolyPatch.H"
+#include "rodMeasures.H"
 #include "OFstream.H"
 #include "foamEigen.H"
-#include <map>
-#include <algorithm>
-#include <vector>
-
-namespace
-{
-
-// Full angle of the wedge mesh (2 pi for a 3-D mesh)
-Foam::scalar meshAngle(const Foam::fvMesh& mesh)
-{
-    using namespace Foam;
-    for (const polyPatch& pp : mesh.boundaryMesh())
-    {
-        if (isA<wedgePolyPatch>(pp))
-        {
-            const scalar c = refCast<const wedgePolyPatch>(pp).cosAngle();
-            return 2*std::acos(min(max(c, -1.0), 1.0));
-        }
-    }
-    return constant::mathematical::twoPi;
-}
-
-// Radius of the body in one slice: where alpha falls through 1/2 going
-// out from the axis (linear between cell centres), so that traces and
-// mist of the phase further out do not count; 0 if the axis cell is
-// below 1/2
-Foam::scalar edgeRadius(std::vector<std::pair<Foam::scalar, Foam::scalar>>& row)
-{
-    std::sort(row.begin(), row.end());
-    if (row.empty() || row[0].second < 0.5)
-    {
-        return 0;
-    }
-    for (size_t i = 1; i < row.size(); ++i)
-    {
-        if (row[i].second < 0.5)
-        {
-            const Foam::scalar r0 = row[i - 1].first, a0 = row[i - 1].second;
-            const Foam::scalar r1 = row[i].first, a1 = row[i].second;
-            return r0 + (a0 - 0.5)/(a0 - a1)*(r1 - r0);
-        }
-    }
-    return row.back().first;
-}
-
-} // End anonymous namespace
-
 
 int main(int argc, char *argv[])
 {
@@ -115,7 +70,7 @@ int main(int argc, char *argv[])
     scalar R0 = args.getOrDefault<scalar>("R0", -1);
     const scalar tolerance = args.getOrDefault<scalar>("tolerance", 0.01);
 
-    const scalar angle = meshAngle(mesh);
+    const scalar angle = rodMeasures::meshAngle(mesh);
     const scalar toFull = constant::mathematical::twoPi/angle;
 
     const fileName outDir(mesh.time().globalPath()/"postProcessing"/"rodProfile");
@@ -143,82 +98,26 @@ int main(int argc, char *argv[])
         const vectorField& C = mesh.C();
         const scalarField& V = mesh.V();
 
-        // Slices of equal axial coordinate
-        std::map<long long, scalar> solid, axisAlpha, axisR, zOf;
-        std::map<long long, std::vector<std::pair<scalar, scalar>>> rows;
-        const scalar zScale = 1e-9*max(mag(mesh.bounds().span()), SMALL);
-        forAll(C, celli)
-        {
-            const vector d(C[celli] - origin);
-            const scalar z = d & axis;
-            const scalar r = mag(d - z*axis);
-            const long long key = std::llround(z/zScale);
-            zOf[key] = z;
-            solid[key] += alpha[celli]*V[celli]*toFull;
-            rows[key].push_back({r, alpha[celli]});
-            auto it = axisR.find(key);
-            if (it == axisR.end() || r < it->second)
-            {
-                axisR[key] = r;
-                axisAlpha[key] = alpha[celli];
-            }
-        }
+        // Length, radii and the slices (rodMeasures: the bodyExtent
+        // function object's measures)
+        const rodMeasures rod(mesh, alpha, axis, origin);
+        const scalar length = rod.length;
+        const scalar maxRadius = rod.maxRadius;
+        const scalar faceRadius = rod.faceRadius;
+        const scalar zMin = rod.zMin;
+        const List<scalar>& zs = rod.z;
+        const List<scalar>& dzs = rod.dz;
+        const List<scalar>& radius = rod.radius;
 
-        // Slice thickness from the spacing of the slices
-        std::vector<scalar> zs;
-        for (const auto& kv : zOf) zs.push_back(kv.second);
         mkDir(outDir/runTime.timeName());
         OFstream profile
         (
             outDir/runTime.timeName()/("profile_" + phaseName + ".csv")
         );
         profile<< "z,radius" << nl;
-
-        scalar length = 0, maxRadius = 0, zMin = GREAT;
-        std::vector<scalar> radius(zs.size(), 0), dzs(zs.size(), 0);
-        label i = 0;
-        for (const auto& kv : zOf)
+        forAll(zs, i)
         {
-            const long long key = kv.first;
-            scalar dz;
-            if (zs.size() < 2) dz = 1;
-            else if (i == 0) dz = zs[1] - zs[0];
-            else if (i + 1 == label(zs.size())) dz = zs[i] - zs[i - 1];
-            else dz = 0.5*(zs[i + 1] - zs[i - 1]);
-
-            dzs[i] = dz;
-            radius[i] = edgeRadius(rows[key]);
-            length += axisAlpha[key]*dz;
-            if (zMin == GREAT && axisAlpha[key] > 1e-3)
-            {
-                // The body fills the top of its first slice
-                zMin = zs[i] + 0.5*dz - axisAlpha[key]*dz;
-            }
-            maxRadius = max(maxRadius, radius[i]);
             profile<< zs[i] << ',' << radius[i] << nl;
-            ++i;
-        }
-
-        // Radius at the impact face. The first slice holding the body reads
-        // its radius half a slice above the face; with the next slice's the
-        // outline is extended to the face (the body's lowest position, or
-        // the slice's lower face if that is higher), which removes the
-        // first-order offset of a sloping outline
-        scalar faceRadius = 0;
-        for (size_t j = 0; j < zs.size(); ++j)
-        {
-            if (radius[j] > 0)
-            {
-                faceRadius = radius[j];
-                if (j + 1 < zs.size() && radius[j + 1] > 0)
-                {
-                    const scalar zFace = max(zMin, zs[j] - 0.5*dzs[j]);
-                    faceRadius +=
-                        (radius[j] - radius[j + 1])*(zs[j] - zFace)
-                       /(zs[j + 1] - zs[j]);
-                }
-                break;
-            }
         }
 
         if (R0 < 0)
@@ -227,14 +126,12 @@ int main(int argc, char *argv[])
             Info<< "Initial radius R0 = " << R0 << nl;
         }
         scalar undeformed = 0;
-        i = 0;
-        for (const auto& kv : zOf)
+        forAll(zs, i)
         {
-            if (axisAlpha[kv.first] > 0.5 && radius[i] < (1 + tolerance)*R0)
+            if (rod.axisAlpha[i] > 0.5 && radius[i] < (1 + tolerance)*R0)
             {
                 undeformed += dzs[i];
             }
-            ++i;
         }
 
         // Energy budget

@@ -33,7 +33,8 @@ Foam::demSolver::demSolver
     faceN_(nPhases_),
     ghost_(nPhases_),
     fallback_(phases, schemeDict),
-    wedges_(mesh_, phases.boundary(), magSf_, schemeDict)
+    wedges_(mesh_, phases.boundary(), magSf_, schemeDict),
+    patchForces_(mesh_.boundary().size(), Zero)
 {
     reconstruction_->setFirstOrderCells(&fallback_.cells());
 
@@ -148,6 +149,8 @@ void Foam::demSolver::boundaryFaces()
     // The cell's face state of a face that is not coupled
     std::vector<phaseSide> cellFace(nPhases_);
 
+    patchForces_ = Zero;
+
     forAll(mesh_.boundary(), patchi)
     {
         const boundaryKinds::kind kind = kinds[patchi];
@@ -260,6 +263,14 @@ void Foam::demSolver::boundaryFaces()
             }
 
             assembly_.addToCell(celli, cellIsLeft ? 0 : 1, magSf_[facei]);
+            if (!coupled && !wedge)
+            {
+                // (the cell is the left side of a face that is not
+                // coupled)
+                const cobasis::vector m(assembly_.momentumToSide(0));
+                patchForces_[patchi] +=
+                    magSf_[facei]*vector(m(0), m(1), m(2));
+            }
             cobasis_.addFace
             (
                 celli, S, side, ghost_, assembly_

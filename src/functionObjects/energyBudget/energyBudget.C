@@ -1,0 +1,113 @@
+#include "energyBudget.H"
+#include "foamEigen.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace functionObjects
+{
+    defineTypeNameAndDebug(energyBudget, 0);
+    addToRunTimeSelectionTable(functionObject, energyBudget, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::functionObjects::energyBudget::energyBudget
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    impactTimeHistory(name, runTime, dict)
+{
+    start();
+}
+
+
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+Foam::wordList Foam::functionObjects::energyBudget::columns() const
+{
+    DynamicList<word> c;
+    for (const word& p : phases().names())
+    {
+        c.append("kinetic." + p);
+        c.append("internal." + p);
+        c.append("elastic." + p);
+        c.append("plasticWork." + p);
+    }
+    c.append("mass");
+    c.append("kinetic");
+    c.append("internal");
+    c.append("elastic");
+    c.append("plasticWork");
+    c.append("total");
+    c.append("unpaid");
+    return wordList(c);
+}
+
+
+void Foam::functionObjects::energyBudget::values(DynamicList<scalar>& row)
+{
+    const phaseSystem& phases = this->phases();
+    const scalarField& V = mesh_.V();
+    const vectorField& U = phases.U().primitiveField();
+    const label nPhases = phases.size();
+
+    // Per phase: kinetic, internal, elastic, plastic work
+    List<scalar> sums(4*nPhases, Zero);
+    scalar carried[phaseModel::maxCarried];
+    for (label k = 0; k < nPhases; ++k)
+    {
+        const hyperelasticPhase& ph = phases.phase(k);
+        const scalarField& alpha = phases.alpha(k).primitiveField();
+        const scalarField& rho = phases.rho(k).primitiveField();
+        const scalarField& p = phases.p(k).primitiveField();
+        const tensorField& A = phases.A(k).primitiveField();
+        const inelasticModel& inelastic = phases[k].inelastic();
+        const bool solid = ph.solid();
+        scalar* s = &sums[4*k];
+        forAll(V, c)
+        {
+            const scalar m = alpha[c]*rho[c]*V[c];
+            s[0] += 0.5*m*magSqr(U[c]);
+            s[1] += m*ph.eos().e(rho[c], p[c]);
+            if (solid)
+            {
+                s[2] += m*ph.elasticEnergy(foamEigen::toEigen(A[c]));
+                phases[k].inelasticState(c, carried);
+                s[3] += m*inelastic.plasticWork(carried);
+            }
+        }
+    }
+    Pstream::listCombineGather(sums, plusEqOp<scalar>());
+    Pstream::listCombineScatter(sums);
+
+    scalar total[4] = {0, 0, 0, 0};
+    for (label k = 0; k < nPhases; ++k)
+    {
+        for (label i = 0; i < 4; ++i)
+        {
+            row.append(sums[4*k + i]);
+            total[i] += sums[4*k + i];
+        }
+    }
+
+    // The mass and energy as the solver sums them (its totals line)
+    const Pair<scalar> totals(phases.totals());
+    row.append(totals.first());
+    for (label i = 0; i < 4; ++i)
+    {
+        row.append(total[i]);
+    }
+    row.append(totals.second());
+    row.append(ledger().unpaidEnergy());
+}
+
+
+// ************************************************************************* //
