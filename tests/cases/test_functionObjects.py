@@ -255,6 +255,7 @@ def taylor_case(name, parallel=False):
     fc.run(case, "rm -rf 0 && cp -r 0.orig 0", log="log.copy")
     fc.run(case, ["setFields"])
     if parallel:
+        fc.write_decompose_dict(case, 2)
         fc.run(case, ["decomposePar", "-force"])
         fc.run(case, "mpirun --oversubscribe -np 2 impactFoam -parallel "
                "-endTime %g" % END_A, log="log.impactFoam")
@@ -626,7 +627,7 @@ def check_rejected_steps():
 def check_surface_velocity():
     case = fc.copy_tutorial("spallPlate", "functionObjects_spall")
     fc.set_entry(case, "system/controlDict", "writePrecision", "17")
-    fc.run(case, ["./Allrun", "-h", "25", "-end", str(END_B)],
+    fc.run(case, ["./Allrun", "-h", "0.025", "-end", str(END_B)],
            log="log.Allrun")
     table = read_dat(case, "freeSurface")
     x = fc.cell_centres(case)[:, 0]
