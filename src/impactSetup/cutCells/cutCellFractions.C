@@ -4,7 +4,7 @@
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-const Foam::scalar Foam::cutCellFractions::tolerance_ = 1e-4;
+const Foam::scalar Foam::cutCellFractions::tolerance_ = 1e-3;
 
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //

@@ -35,7 +35,7 @@ void Foam::bodyShape::missing
 )
 {
     FatalIOErrorInFunction(dict)
-        << owner << ": shape " << dict.getOrDefault<word>("shape", "?")
+        << owner.c_str() << ": shape " << dict.getOrDefault<word>("shape", "?")
         << " needs the entry " << key << " (missing in " << dict.name()
         << ")" << exit(FatalIOError);
 }
@@ -52,7 +52,7 @@ Foam::scalar Foam::bodyShape::positive
     if (!(value > 0))
     {
         FatalIOErrorInFunction(dict)
-            << owner << ": entry " << key << " " << value
+            << owner.c_str() << ": entry " << key << " " << value
             << " must be positive" << exit(FatalIOError);
     }
     return value;
@@ -70,7 +70,7 @@ Foam::vector Foam::bodyShape::unitVector
     if (!(mag(v) > VSMALL))
     {
         FatalIOErrorInFunction(dict)
-            << owner << ": entry " << key << " " << v
+            << owner.c_str() << ": entry " << key << " " << v
             << " must be a non-zero vector" << exit(FatalIOError);
     }
     return v/mag(v);

@@ -14,7 +14,7 @@ Foam::autoPtr<Foam::bodyShape> Foam::bodyShape::New
     if (!dict.found("shape", keyType::LITERAL))
     {
         FatalIOErrorInFunction(dict)
-            << owner << ": no entry shape in " << dict.name()
+            << owner.c_str() << ": no entry shape in " << dict.name()
             << nl << "Valid shapes: "
             << dictionaryConstructorTablePtr_->sortedToc()
             << exit(FatalIOError);
@@ -27,7 +27,7 @@ Foam::autoPtr<Foam::bodyShape> Foam::bodyShape::New
     {
         const wordList valid(dictionaryConstructorTablePtr_->sortedToc());
         FatalIOErrorInFunction(dict)
-            << owner << ": unknown shape " << shapeType
+            << owner.c_str() << ": unknown shape " << shapeType
             << " (entry shape); did you mean "
             << nearestKeyword(shapeType, valid) << "?"
             << nl << "Valid shapes: " << valid

@@ -39,7 +39,7 @@ Foam::bodyShapes::box::box
         if (!(max_[i] > min_[i]))
         {
             FatalIOErrorInFunction(dict)
-                << owner << ": box min " << min_ << " max " << max_
+                << owner.c_str() << ": box min " << min_ << " max " << max_
                 << " is empty in direction " << label(i)
                 << " (need max > min)" << exit(FatalIOError);
         }

@@ -77,7 +77,7 @@ Foam::bodyShapes::cone::cone
     if (topRadius_ < 0)
     {
         FatalIOErrorInFunction(dict)
-            << owner << ": entry topRadius " << topRadius_
+            << owner.c_str() << ": entry topRadius " << topRadius_
             << " must not be negative" << exit(FatalIOError);
     }
 }

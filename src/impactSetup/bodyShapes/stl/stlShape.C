@@ -38,7 +38,7 @@ Foam::bodyShapes::stl::stl
     if (!isFile(file))
     {
         FatalIOErrorInFunction(dict)
-            << owner << ": entry file: no surface file " << file
+            << owner.c_str() << ": entry file: no surface file " << file
             << exit(FatalIOError);
     }
     surface_.reset(new triSurface(file));
@@ -51,7 +51,7 @@ Foam::bodyShapes::stl::stl
     if (surface_->empty())
     {
         FatalIOErrorInFunction(dict)
-            << owner << ": surface " << file << " has no triangles"
+            << owner.c_str() << ": surface " << file << " has no triangles"
             << exit(FatalIOError);
     }
 
@@ -68,7 +68,7 @@ Foam::bodyShapes::stl::stl
     if (open)
     {
         FatalIOErrorInFunction(dict)
-            << owner << ": surface " << file << " is not closed: " << open
+            << owner.c_str() << ": surface " << file << " is not closed: " << open
             << " of its " << edgeFaces.size() << " edges do not join two"
             << " triangles (inside and outside need a closed surface)"
             << exit(FatalIOError);

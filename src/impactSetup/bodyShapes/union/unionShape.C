@@ -30,7 +30,7 @@ Foam::bodyShapes::shapeUnion::shapeUnion
     if (dicts.empty())
     {
         FatalIOErrorInFunction(dict)
-            << owner << ": entry shapes of a union is empty"
+            << owner.c_str() << ": entry shapes of a union is empty"
             << exit(FatalIOError);
     }
     parts_.setSize(dicts.size());
