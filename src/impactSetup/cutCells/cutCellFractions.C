@@ -6,6 +6,8 @@
 
 const Foam::scalar Foam::cutCellFractions::tolerance_ = 1e-3;
 
+const Foam::scalar Foam::cutCellFractions::snapFraction_ = 1e-4;
+
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -33,6 +35,13 @@ inline scalar triArea(const vector2D& a, const vector2D& b, const vector2D& c)
 }
 
 
+// A fraction within round-off of 0 or 1 is 0 or 1
+inline scalar roundOff(const scalar a)
+{
+    return a < 1e-12 ? 0 : a > 1 - 1e-12 ? 1 : a;
+}
+
+
 // The point on edge a-b where the linear interpolant of (fa, fb) is zero
 template<class Point>
 inline Point crossing(const Point& a, const Point& b, scalar fa, scalar fb)
@@ -49,9 +58,18 @@ inline Point crossing(const Point& a, const Point& b, scalar fa, scalar fb)
 Foam::scalar Foam::cutCellFractions::tetClip
 (
     const FixedList<point, 4>& x,
-    const FixedList<scalar, 4>& f
+    const FixedList<scalar, 4>& fIn,
+    const scalar snap
 )
 {
+    // Values within snap of zero are on the surface (mesh points written
+    // to a finite precision do not put a node exactly on it)
+    FixedList<scalar, 4> f;
+    for (label i = 0; i < 4; ++i)
+    {
+        f[i] = mag(fIn[i]) <= snap ? 0 : fIn[i];
+    }
+
     label neg[4], pos[4];
     label nNeg = 0, nPos = 0;
     for (label i = 0; i < 4; ++i)
@@ -181,7 +199,9 @@ Foam::scalar Foam::cutCellFractions::tetInside
             fc[k] = v < 4 ? f[v] : fm[v - 4];
         }
         inside +=
-            leaf ? tetClip(xc, fc) : tetInside(phi, xc, fc, level + 1, tol);
+            leaf
+          ? tetClip(xc, fc, snapFraction_*tol)
+          : tetInside(phi, xc, fc, level + 1, tol);
     }
     return inside;
 }
@@ -201,9 +221,16 @@ Foam::scalar Foam::cutCellFractions::rIntegral
 Foam::scalar Foam::cutCellFractions::triClip
 (
     const FixedList<vector2D, 3>& x,
-    const FixedList<scalar, 3>& f
+    const FixedList<scalar, 3>& fIn,
+    const scalar snap
 )
 {
+    FixedList<scalar, 3> f;
+    for (label i = 0; i < 3; ++i)
+    {
+        f[i] = mag(fIn[i]) <= snap ? 0 : fIn[i];
+    }
+
     // Sutherland-Hodgman against the linear interpolant: the polygon of
     // the triangle where f < 0 (at most four vertices)
     vector2D poly[4];
@@ -287,7 +314,10 @@ Foam::scalar Foam::cutCellFractions::triInside
             xc[k] = v < 3 ? x[v] : m[v - 3];
             fc[k] = v < 3 ? f[v] : fm[v - 3];
         }
-        I += leaf ? triClip(xc, fc) : triInside(phi, xc, fc, level + 1, tol);
+        I +=
+            leaf
+          ? triClip(xc, fc, snapFraction_*tol)
+          : triInside(phi, xc, fc, level + 1, tol);
     }
     return I;
 }
@@ -330,7 +360,7 @@ Foam::scalar Foam::cutCellFractions::cellFraction3D
             inside += tetInside(phi, x, f, 0, tol);
         }
     }
-    return total > 0 ? min(max(inside/total, scalar(0)), scalar(1)) : 0;
+    return total > 0 ? roundOff(inside/total) : 0;
 }
 
 
@@ -379,7 +409,7 @@ Foam::scalar Foam::cutCellFractions::cellFraction2D
         total += rIntegral(C, a, b);
         inside += triInside(phi2, x, f, 0, tol);
     }
-    return total > 0 ? min(max(inside/total, scalar(0)), scalar(1)) : 0;
+    return total > 0 ? roundOff(inside/total) : 0;
 }
 
 

@@ -25,9 +25,9 @@ void Foam::impactProblem::resolveMaterials()
         {
             FatalIOErrorInFunction(dict)
                 << owner.c_str() << ": phase " << phase << " has material "
-                << material << " but " << firstOwner[phase].c_str()
-                << " gives the same phase material "
-                << phaseMaterials_[phase] << ": one phase, one material"
+                << material << ", but " << firstOwner[phase].c_str()
+                << " gives it material " << phaseMaterials_[phase]
+                << ": one phase, one material"
                 << " (give the bodies different phase names)"
                 << exit(FatalIOError);
         }

@@ -26,29 +26,43 @@ Foam::bodyShapes::shapeUnion::shapeUnion
     bodyShape(owner)
 {
     checkEntries(dict, {"shapes"}, bodyKeys, owner);
-    const List<dictionary> dicts(required<List<dictionary>>(dict, "shapes", owner));
-    if (dicts.empty())
+    if (!dict.found("shapes", keyType::LITERAL))
+    {
+        missing(dict, "shapes", owner);
+    }
+    if (!dict.isDict("shapes"))
     {
         FatalIOErrorInFunction(dict)
-            << owner.c_str() << ": entry shapes of a union is empty"
+            << owner.c_str() << ": entry shapes of a union must be a"
+            << " dictionary of named shapes, shapes { a { shape ...; } ... }"
             << exit(FatalIOError);
     }
-    parts_.setSize(dicts.size());
-    forAll(dicts, i)
+    const dictionary& shapes = dict.subDict("shapes");
+    for (const entry& e : shapes)
     {
-        dictionary part(dict, dicts[i]);
-        part.name() = dict.name() + "/shapes/" + Foam::name(i);
-        parts_.set
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(shapes)
+                << owner.c_str() << ": entry " << e.keyword() << " of shapes"
+                << " is not a shape (a dictionary name { shape ...; })"
+                << exit(FatalIOError);
+        }
+        parts_.append
         (
-            i,
             bodyShape::New
             (
-                part,
-                owner + ", part " + Foam::name(i) + " of the union",
+                e.dict(),
+                owner + ", shape " + e.keyword() + " of the union",
                 wordList(),
                 runTime
             )
         );
+    }
+    if (parts_.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << owner.c_str() << ": entry shapes of a union is empty"
+            << exit(FatalIOError);
     }
 }
 
