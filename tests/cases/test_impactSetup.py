@@ -42,9 +42,15 @@ Checks
                     files (new cell count in every field)
   impactSetup_noOverwrite  a user's 0/U (no impactSetup mark) and a mesh
                     not made by impactSetup stop it, naming the file
+  impactSetup_existingMesh  without a domain the case's mesh (the
+                    tutorial's) is used as it is: the rods' volume on it
+                    within 1e-6 of 2 pi R^2 L, no blockMeshDict written
+  impactSetup_template  the projectileOnPlate template at 1 mm cells:
+                    impactSetup, then impactFoam runs 0.1 us
 """
 import math
 import os
+import re
 import shutil
 import sys
 
@@ -556,9 +562,54 @@ def check_copper_rods():
                  "user's 0/U refused: %s, kept: %s; foreign mesh refused: %s"
                  % (ok1, kept, ok2))
 
+    # Without a domain: the case's own mesh (the tutorial's, its radial
+    # nodes not on the rods' radius), used as it is
+    text = ROD_DICT % "0.4e-3"
+    text = text[:text.find("domain")] + text[text.find("ambient"):]
+    case = new_case("existingMesh", text, {"copperTaylor": COPPER})
+    shutil.copytree(os.path.join(tut, "constant", "polyMesh"),
+                    os.path.join(case, "constant", "polyMesh"))
+    try:
+        run_setup(case)
+        m = mg.read_polymesh(case)
+        a = fc.read_field(case, "0", "alpha.copper", m.nCells)
+        p = m.points[np.argmax(m.points[:, 1])]
+        V = m.V * 2 * PI / math.sin(2 * math.atan2(abs(p[2]), p[1]))
+        err = np.sum(a * V) / (2 * PI * 3.2e-3 ** 2 * 32.4e-3) - 1
+        checks.check("impactSetup_existingMesh",
+                     abs(err) < 1e-6 and m.nCells == mt.nCells
+                     and not os.path.exists(os.path.join(case, "system",
+                                                          "blockMeshDict")),
+                     "copper volume %.1e off the rods' on the tutorial's "
+                     "mesh (%d cells)" % (err, m.nCells))
+    except fc.FoamError as e:
+        checks.fail("impactSetup_existingMesh", e.summary or str(e))
+
+
+def check_template():
+    """The projectileOnPlate template at a coarse cell size: impactSetup
+    writes what impactFoam starts from (a few steps)."""
+    case = fc.copy_tutorial("templates/projectileOnPlate",
+                            "impactSetup_projectileOnPlate", run_dir=RUN)
+    path = os.path.join(case, "system", "impactDict")
+    with open(path) as f:
+        text = f.read()
+    text = re.sub(r"cellSize\s+[^;]+;", "cellSize 1e-3;", text, count=1)
+    with open(path, "w") as f:
+        f.write(text)
+    try:
+        log = run_setup(case)
+        fc.run(case, ["impactFoam", "-endTime", "1e-7"])
+        checks.check("impactSetup_template", "Files written" in log,
+                     "projectileOnPlate: impactSetup and 1e-7 s of "
+                     "impactFoam ran")
+    except fc.FoamError as e:
+        checks.fail("impactSetup_template", e.summary or str(e))
+
 
 def main():
-    missing = fc.require_apps("impactSetup", "blockMesh", "setFields")
+    missing = fc.require_apps("impactSetup", "blockMesh", "setFields",
+                              "impactFoam")
     if missing:
         checks.fail("impactSetup", "missing " + str(missing))
         checks.exit()
@@ -566,6 +617,7 @@ def main():
     check_errors()
     check_cuts_and_gap()
     check_copper_rods()
+    check_template()
     check_volumes()
     checks.exit()
 
