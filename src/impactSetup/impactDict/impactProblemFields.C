@@ -367,7 +367,12 @@ void Foam::impactProblem::setFields(const fvMesh& mesh)
     Info<< nl << "impactSetup: " << nCells << " cells, geometry " << geometry_
         << (geometry_ == "axisymmetric" ? " (volumes and masses of the whole"
             " body of revolution)" : "") << nl
-        << "Phases " << phases_ << " (ambient " << ambient_.phase
+        << "Phases";
+    for (const word& phase : phases_)
+    {
+        Info<< " " << phase;
+    }
+    Info<< " (ambient " << ambient_.phase
         << ": material " << ambient_.material << ", rho " << ambient_.rho
         << ", p " << ambient_.p;
     if (ambient_.T > 0)
