@@ -17,7 +17,8 @@ void require(const dictionary& dict, const word& key, const string& owner)
     if (!dict.found(key, keyType::LITERAL))
     {
         FatalIOErrorInFunction(dict)
-            << owner.c_str() << ": missing entry " << key << " in " << dict.name()
+            << owner.c_str() << ": missing entry " << key << " in "
+            << dict.name()
             << exit(FatalIOError);
     }
 }
@@ -33,7 +34,8 @@ const dictionary& subDict
     if (!dict.isDict(key, keyType::LITERAL))
     {
         FatalIOErrorInFunction(dict)
-            << owner.c_str() << ": entry " << key << " must be a dictionary { ... }"
+            << owner.c_str() << ": entry " << key
+            << " must be a dictionary { ... }"
             << exit(FatalIOError);
     }
     return dict.subDict(key);
@@ -65,7 +67,12 @@ void Foam::impactProblem::readDomain()
     }
 
     const dictionary& dd = subDict(dict_, "domain", "impactDict");
-    checkKeywords(dd, {"min", "max", "cellSize", "patches"}, "impactDict domain");
+    checkKeywords
+    (
+        dd,
+        {"min", "max", "cellSize", "patches"},
+        "impactDict domain"
+    );
     require(dd, "min", "impactDict domain");
     require(dd, "max", "impactDict domain");
     require(dd, "cellSize", "impactDict domain");

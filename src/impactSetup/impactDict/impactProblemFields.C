@@ -122,7 +122,8 @@ void Foam::impactProblem::checkInside
                     FatalIOErrorInFunction
                     (
                         dict_.subDict("bodies").subDict(b.name())
-                    )   << b.owner().c_str() << " lies partly outside the domain:"
+                    )   << b.owner().c_str()
+                        << " lies partly outside the domain:"
                         << " it crosses patch " << pp.name() << " at " << q
                         << ". Its bounds " << b.bounds() << ", the mesh's "
                         << meshBounds << exit(FatalIOError);
@@ -165,7 +166,11 @@ void Foam::impactProblem::checkOverlaps
                 (
                     [&a, &b](const point& x)
                     {
-                        return max(a.effectiveDistance(x), b.effectiveDistance(x));
+                        return max
+                        (
+                            a.effectiveDistance(x),
+                            b.effectiveDistance(x)
+                        );
                     }
                 )
             );
@@ -173,8 +178,10 @@ void Foam::impactProblem::checkOverlaps
             const scalar Va = sum(alpha[i]*V), Vb = sum(alpha[j]*V);
             if (Vboth > 1e-6*min(Va, Vb))
             {
-                FatalIOErrorInFunction(dict_.subDict("bodies").subDict(b.name()))
-                    << b.owner().c_str() << " overlaps body " << a.name()
+                FatalIOErrorInFunction
+                (
+                    dict_.subDict("bodies").subDict(b.name())
+                )   << b.owner().c_str() << " overlaps body " << a.name()
                     << ": volume " << Vboth << " in common ("
                     << 100*Vboth/Va << " % of " << a.name() << "). Move them"
                     << " apart, or give " << b.name() << " the entry cuts ("

@@ -39,7 +39,10 @@ void writeVertex(Ostream& os, const point& p)
 void Foam::impactProblem::guardMesh() const
 {
     const fileName meshDir(runTime_.path()/runTime_.constant()/"polyMesh");
-    const fileName blockMeshDict(runTime_.path()/runTime_.system()/"blockMeshDict");
+    const fileName blockMeshDict
+    (
+        runTime_.path()/runTime_.system()/"blockMeshDict"
+    );
     if
     (
         isFile(meshDir/"faces")
@@ -141,7 +144,12 @@ void Foam::impactProblem::writeBlockMeshDict()
         const label t = 4*nb;
         patch("xMin", patchType(patchKinds_["xMin"]), xMin);
         patch("xMax", patchType(patchKinds_["xMax"]), xMax);
-        patch("yMax", patchType(patchKinds_["yMax"]), {{t, t + 3, t + 2, t + 1}});
+        patch
+        (
+            "yMax",
+            patchType(patchKinds_["yMax"]),
+            {{t, t + 3, t + 2, t + 1}}
+        );
         patch("axis", "symmetryPlane", {{0, 1, 2, 3}});
         patch("front", "wedge", front);
         patch("back", "wedge", back);

@@ -47,7 +47,10 @@ void Foam::impactProblem::resolveMaterials()
     for (const word& phase : phases_)
     {
         const word& material = phaseMaterials_[phase];
-        const fileNameList places(phaseMaterial::searchPath(material, runTime_));
+        const fileNameList places
+        (
+            phaseMaterial::searchPath(material, runTime_)
+        );
         bool found = false;
         for (const fileName& f : places)
         {
@@ -86,7 +89,11 @@ void Foam::impactProblem::resolveMaterials()
         phaseDict.add("material", material);
         if (phaseProperties_.isDict(phase))
         {
-            phaseMaterial::mergeOnto(phaseDict, phaseProperties_.subDict(phase));
+            phaseMaterial::mergeOnto
+            (
+                phaseDict,
+                phaseProperties_.subDict(phase)
+            );
         }
         phaseDicts_.set
         (
@@ -138,7 +145,8 @@ Foam::scalar Foam::impactProblem::density
         if (dict.found("T", keyType::LITERAL))
         {
             FatalIOErrorInFunction(dict)
-                << owner.c_str() << ": give rho or T, not both" << exit(FatalIOError);
+                << owner.c_str() << ": give rho or T, not both"
+                << exit(FatalIOError);
         }
         const scalar rho = dict.get<scalar>("rho");
         if (!eos->admissible(rho, p))
@@ -157,9 +165,11 @@ Foam::scalar Foam::impactProblem::density
         if (dict.found("T", keyType::LITERAL))
         {
             FatalIOErrorInFunction(dict)
-                << owner.c_str() << ": entry T, but the equation of state of material "
+                << owner.c_str()
+                << ": entry T, but the equation of state of material "
                 << phaseMaterials_[phase] << " has no temperature (no Cv):"
-                << " give rho" << (solid ? " (or nothing: the elastic rho0)" : "")
+                << " give rho"
+                << (solid ? " (or nothing: the elastic rho0)" : "")
                 << exit(FatalIOError);
         }
         if (solid && pd.isDict("elasticity")
@@ -169,7 +179,8 @@ Foam::scalar Foam::impactProblem::density
             return pd.subDict("elasticity").get<scalar>("rho0");
         }
         FatalIOErrorInFunction(dict)
-            << owner.c_str() << ": no rho, and the equation of state of material "
+            << owner.c_str()
+            << ": no rho, and the equation of state of material "
             << phaseMaterials_[phase] << " has no temperature to find it"
             << " from p and T: give rho" << exit(FatalIOError);
     }
@@ -181,7 +192,8 @@ Foam::scalar Foam::impactProblem::density
     if (!(T > 0))
     {
         FatalIOErrorInFunction(dict)
-            << owner.c_str() << ": T " << T << " must be positive" << exit(FatalIOError);
+            << owner.c_str() << ": T " << T << " must be positive"
+            << exit(FatalIOError);
     }
 
     const scalar rhoRef = eos->referenceDensity();
@@ -240,7 +252,8 @@ void Foam::impactProblem::placeBodies()
         if (!gd.found("to") || !gd.found("distance"))
         {
             FatalIOErrorInFunction(gd)
-                << b.owner().c_str() << ", gap: needs the entries to and distance"
+                << b.owner().c_str()
+                << ", gap: needs the entries to and distance"
                 << exit(FatalIOError);
         }
         const word to(gd.get<word>("to"));
@@ -271,7 +284,8 @@ void Foam::impactProblem::placeBodies()
          && bd.subDict(to).found("gap", keyType::LITERAL))
         {
             FatalIOErrorInFunction(gd)
-                << b.owner().c_str() << ", gap: body " << to << " is placed by a gap"
+                << b.owner().c_str() << ", gap: body " << to
+                << " is placed by a gap"
                 << " itself later on: put the gap on one of the two"
                 << exit(FatalIOError);
         }
@@ -292,13 +306,15 @@ Foam::vector Foam::impactProblem::gapShift
     if (!(mag(body.U) > 0))
     {
         FatalIOErrorInFunction(dict)
-            << body.owner().c_str() << ", gap: the body is moved along its velocity,"
+            << body.owner().c_str()
+            << ", gap: the body is moved along its velocity,"
             << " and its U is zero" << exit(FatalIOError);
     }
     if (!body.shape().bounded())
     {
         FatalIOErrorInFunction(dict)
-            << body.owner().c_str() << ", gap: an unbounded shape cannot be placed"
+            << body.owner().c_str()
+            << ", gap: an unbounded shape cannot be placed"
             << " by a gap (place the other body)" << exit(FatalIOError);
     }
     const vector d(body.U/mag(body.U));
@@ -387,7 +403,8 @@ Foam::vector Foam::impactProblem::gapShift
     if (!(gapAt(lo) <= gap && gapAt(hi) >= gap))
     {
         FatalIOErrorInFunction(dict)
-            << body.owner().c_str() << ", gap: moving along its velocity " << body.U
+            << body.owner().c_str() << ", gap: moving along its velocity "
+            << body.U
             << " the body does not reach distance " << gap << " from "
             << target.name() << exit(FatalIOError);
     }

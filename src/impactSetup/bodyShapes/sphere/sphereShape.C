@@ -46,7 +46,8 @@ Foam::scalar Foam::bodyShapes::sphere::distance(const point& p) const
 
 Foam::boundBox Foam::bodyShapes::sphere::bounds() const
 {
-    return boundBox(centre_ - radius_*vector::one, centre_ + radius_*vector::one);
+    const vector r(radius_*vector::one);
+    return boundBox(centre_ - r, centre_ + r);
 }
 
 
@@ -70,7 +71,8 @@ Foam::scalar Foam::bodyShapes::sphere::volume
     if (geometry == "axisymmetric")
     {
         const bool onAxis =
-            mag(centre_.y()) < 1e-12*radius_ && mag(centre_.z()) < 1e-12*radius_;
+            mag(centre_.y()) < 1e-12*radius_
+         && mag(centre_.z()) < 1e-12*radius_;
         return onAxis ? 4*pi*pow3(radius_)/3 : -1;
     }
     return mag(centre_.z()) < 1e-12*radius_ ? pi*sqr(radius_)*depth : -1;

@@ -68,7 +68,8 @@ Foam::bodyShapes::stl::stl
     if (open)
     {
         FatalIOErrorInFunction(dict)
-            << owner.c_str() << ": surface " << file << " is not closed: " << open
+            << owner.c_str() << ": surface " << file << " is not closed: "
+            << open
             << " of its " << edgeFaces.size() << " edges do not join two"
             << " triangles (inside and outside need a closed surface)"
             << exit(FatalIOError);
