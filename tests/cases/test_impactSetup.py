@@ -45,6 +45,10 @@ Checks
   impactSetup_existingMesh  without a domain the case's mesh (the
                     tutorial's) is used as it is: the rods' volume on it
                     within 1e-6 of 2 pi R^2 L, no blockMeshDict written
+  impactSetup_unstructured_<geometry>  without a domain, on jittered
+                    triangular prisms (planar, a disc) and tetrahedra
+                    (threeD, a ball) 10 grid spacings across: volume within
+                    1e-3
   impactSetup_template  the projectileOnPlate template at 1 mm cells:
                     impactSetup, then impactFoam runs 0.1 us
 """
@@ -60,6 +64,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
 import foamcase as fc                         # noqa: E402
 import meshGeometry as mg                     # noqa: E402
+import triMesh                                # noqa: E402
 from checks import Checks                     # noqa: E402
 
 checks = Checks()
@@ -607,6 +612,45 @@ def check_template():
         checks.fail("impactSetup_template", e.summary or str(e))
 
 
+def check_unstructured():
+    """Without a domain, on meshes blockMesh does not make: jittered
+    triangular prisms (planar) and tetrahedra (threeD), tests/lib/triMesh.py.
+    A disc and a ball 10 grid spacings across."""
+    for geometry, name in (("planar", "disc"), ("threeD", "ball")):
+        n = 32 if geometry == "planar" else 16
+        R = 5.0 / n
+        text = """geometry %s;
+ambient { material air; rho 1.2; }
+bodies
+{
+    %s { shape sphere; centre (0.513 0.488 %s); radius %.12g;
+         material steel4340; phase %s; rho 7850; }
+}
+""" % (geometry, name, "0" if geometry == "planar" else "0.507", R, name)
+        case = new_case("unstructured_" + geometry, text)
+        if geometry == "planar":
+            pts, cells = triMesh.triangle_prisms(n, n, jitter=0.2, seed=3)
+            triMesh.write_polymesh(case, pts, cells, triMesh.box_patches_2d)
+            exact = PI * R * R
+        else:
+            pts, cells = triMesh.tetrahedra(n, n, n, z1=1.0, jitter=0.15,
+                                            seed=3)
+            triMesh.write_polymesh(case, pts, cells, triMesh.box_patches_3d)
+            exact = 4 * PI * R ** 3 / 3
+        try:
+            run_setup(case)
+            vol = measured_volumes(case, [name], geometry)[name]
+            err = vol / exact - 1
+            checks.check("impactSetup_unstructured_" + geometry,
+                         abs(err) < 1e-3,
+                         "%s on %s: relative volume error %.2e (limit 1e-3)"
+                         % (name, "triangular prisms" if geometry == "planar"
+                            else "tetrahedra", err))
+        except fc.FoamError as e:
+            checks.fail("impactSetup_unstructured_" + geometry,
+                        e.summary or str(e))
+
+
 def main():
     missing = fc.require_apps("impactSetup", "blockMesh", "setFields",
                               "impactFoam")
@@ -618,6 +662,7 @@ def main():
     check_cuts_and_gap()
     check_copper_rods()
     check_template()
+    check_unstructured()
     check_volumes()
     checks.exit()
 
