@@ -16,7 +16,8 @@ closed forms (the STL's: its polyhedron's, by the divergence theorem).
 Checks
   impactSetup_volume_<geometry>_<shape>   |V_mesh/V_exact - 1| < 1e-3 at
                     10 cells across, and smaller when h halves (or below
-                    1e-9 on both meshes: planes are cut exactly)
+                    1e-9 on both meshes: boxes and half-spaces are
+                    clipped exactly)
   impactSetup_error_<what>   a bad impactDict stops with the message
                     naming the body or entry (asserted on the text): unknown
                     keyword (body, domain, ambient, top level, gap), unknown

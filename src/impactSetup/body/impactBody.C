@@ -85,6 +85,24 @@ Foam::scalar Foam::impactBody::effectiveDistance(const point& x) const
 }
 
 
+bool Foam::impactBody::polyhedron(List<vector>& n, scalarList& d) const
+{
+    if (!cutters_.empty() || !shape_->polyhedron(n, d))
+    {
+        return false;
+    }
+    // n.p_local < d with p_local = centre + R^T (p - shift - centre):
+    // (R n).p < d - n.centre + (R n).(shift + centre)
+    forAll(n, i)
+    {
+        const vector Rn(R_ & n[i]);
+        d[i] += (Rn & (shift_ + centre_)) - (n[i] & centre_);
+        n[i] = Rn;
+    }
+    return true;
+}
+
+
 Foam::boundBox Foam::impactBody::bounds() const
 {
     const boundBox bb(shape_->bounds());

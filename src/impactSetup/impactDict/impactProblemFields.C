@@ -251,10 +251,19 @@ void Foam::impactProblem::setFields(const fvMesh& mesh)
     forAll(bodies_, i)
     {
         const impactBody& b = bodies_[i];
-        alpha[i] = cut.fractions
-        (
-            [&b](const point& x) { return b.effectiveDistance(x); }
-        );
+        List<vector> n;
+        scalarList d;
+        if (b.polyhedron(n, d))
+        {
+            alpha[i] = cut.fractions(n, d);
+        }
+        else
+        {
+            alpha[i] = cut.fractions
+            (
+                [&b](const point& x) { return b.effectiveDistance(x); }
+            );
+        }
     }
     Info<< "Volume fractions of " << bodies_.size() << " bodies on "
         << nCells << " cells in " << clock.timeIncrement() << " s" << nl

@@ -75,6 +75,23 @@ Foam::point Foam::bodyShapes::box::referencePoint() const
 }
 
 
+bool Foam::bodyShapes::box::polyhedron(List<vector>& n, scalarList& d) const
+{
+    n.setSize(6);
+    d.setSize(6);
+    for (direction i = 0; i < vector::nComponents; ++i)
+    {
+        vector e(Zero);
+        e[i] = 1;
+        n[2*i] = e;
+        d[2*i] = max_[i];
+        n[2*i + 1] = -e;
+        d[2*i + 1] = -min_[i];
+    }
+    return true;
+}
+
+
 Foam::scalar Foam::bodyShapes::box::volume
 (
     const word& geometry,

@@ -56,6 +56,18 @@ Foam::point Foam::bodyShapes::halfSpace::referencePoint() const
 }
 
 
+bool Foam::bodyShapes::halfSpace::polyhedron
+(
+    List<vector>& n,
+    scalarList& d
+) const
+{
+    n = List<vector>(1, normal_);
+    d = scalarList(1, normal_ & point_);
+    return true;
+}
+
+
 Foam::scalar Foam::bodyShapes::halfSpace::volume
 (
     const word&,
