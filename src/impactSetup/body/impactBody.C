@@ -52,7 +52,11 @@ Foam::impactBody::impactBody
         R_ = c*tensor::I + s*K + (1 - c)*(axis*axis);
         rotated_ = true;
     }
-    else if (dict.found("rotationAxis", keyType::LITERAL))
+    else if
+    (
+        dict.found("rotationAxis", keyType::LITERAL)
+     && !dict.found("angle", keyType::LITERAL)
+    )
     {
         FatalIOErrorInFunction(dict)
             << owner_.c_str() << ": entry rotationAxis without angle"
