@@ -39,8 +39,9 @@ Checks
                     alpha.copper, alpha.air, U, rho.copper, rho.air and p
                     as the tutorial's blockMesh + setFields (cells aligned:
                     differences below 1e-9)
-  impactSetup_rerun  a second run with another cellSize rewrites its own
-                    files (new cell count in every field)
+  impactSetup_rerun  a second run with another cellSize and the phase
+                    renamed rewrites its own files (new cell count in every
+                    field) and removes the old phase's
   impactSetup_noOverwrite  a user's 0/U (no impactSetup mark) and a mesh
                     not made by impactSetup stop it, naming the file
   impactSetup_existingMesh  without a domain the case's mesh (the
@@ -530,20 +531,22 @@ def check_copper_rods():
                  "cell centres within %.1e m" % (d, name, ms.nCells, dC))
 
     # Rerun with another cell size: impactSetup rewrites its own files
+    # (and the phase renamed: the old phase's files go)
     with open(os.path.join(case, "system", "impactDict"), "w") as f:
-        f.write(ROD_DICT % "0.8e-3")
+        f.write((ROD_DICT % "0.8e-3").replace("phase copper", "phase rods"))
     try:
         log = run_setup(case)
         n = mg.read_polymesh(case).nCells
         sizes = [len(fc.read_field(case, "0", f, n))
-                 for f in ("alpha.copper", "alpha.air", "rho.copper", "U",
-                           "p")]
+                 for f in ("alpha.rods", "alpha.air", "rho.rods", "U", "p")]
+        gone = not fc.has_field(case, "0", "alpha.copper") \
+            and not fc.has_field(case, "0", "rho.copper")
         # 72 mm / 0.8 mm = 90 cells along x, 10/0.8 = 12.5 rounded to 13
         checks.check("impactSetup_rerun",
                      n == 90 * 13 and all(s == n for s in sizes)
-                     and "Files written" in log,
-                     "%d cells after %d; field sizes %s" %
-                     (n, ms.nCells, sizes))
+                     and "Files written" in log and gone,
+                     "%d cells after %d; field sizes %s; the old phase's "
+                     "files removed: %s" % (n, ms.nCells, sizes, gone))
     except fc.FoamError as e:
         checks.fail("impactSetup_rerun", e.summary or str(e))
 

@@ -117,6 +117,20 @@ int main(int argc, char *argv[])
 
     inputDefaults::print(Info);
     problem.files().list(Info);
+    const fileNameList stale
+    (
+        problem.files().removeStale(runTime.path()/runTime.timeName())
+    );
+    if (stale.size())
+    {
+        Info<< "Removed (written by an earlier run of impactSetup, not by"
+            << " this one):" << nl;
+        for (const fileName& f : stale)
+        {
+            Info<< "    " << f.c_str() << nl;
+        }
+        Info<< endl;
+    }
 
     Info<< "End" << nl << endl;
 

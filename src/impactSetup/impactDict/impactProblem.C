@@ -257,8 +257,12 @@ void Foam::impactProblem::readPhaseProperties()
     wordList valid(phaseRegimes::keywords);
     valid.append(phases_);
     OStringStream owner;
-    owner << "impactDict phaseProperties (the phases " << phases_
-        << " and phaseProperties entries)";
+    owner << "impactDict phaseProperties (the phases";
+    for (const word& phase : phases_)
+    {
+        owner << " " << phase.c_str();
+    }
+    owner << " and phaseProperties entries)";
     checkKeywords(phaseProperties_, valid, owner.str());
     for (const word& key : phaseProperties_.toc())
     {
