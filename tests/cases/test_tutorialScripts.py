@@ -17,7 +17,7 @@ command-line convention, rerun-safe, and committed files never touched.
                               holds exactly the committed files, byte for
                               byte (taylorBar, clayImpact, taylorTest,
                               spallPlate, hypervelocityImpact, closedBox
-                              on 2 processes)
+                              on 2 processes, templates/projectileOnPlate)
 About a minute.
 """
 import filecmp
@@ -42,6 +42,7 @@ CLEAN_RUNS = [
     ("spallPlate", ["-h", "0.1", "-end", "2e-7"]),
     ("hypervelocityImpact", ["-h", "2", "-end", "2e-7"]),
     ("closedBox", ["-np", "2", "-end", "3e-6"]),
+    ("templates/projectileOnPlate", ["-h", "1", "-end", "2e-7"]),
 ]
 
 
@@ -160,12 +161,13 @@ def check_rerun(checks):
 def check_clean(checks):
     for t, opts in CLEAN_RUNS:
         src = os.path.join(fc.TUTORIALS_DIR, t)
-        case = fc.copy_tutorial(t, "tutorialScripts_clean_" + t)
+        case = fc.copy_tutorial(t, "tutorialScripts_clean_"
+                                + t.replace("/", "_"))
         code, out = script(case, ["./Allrun"] + opts)
         ran = code == 0 and len(fc.time_dirs(case)) > 1
         code2, _ = script(case, ["./Allclean"])
         ok, why = same_as_committed(case, src)
-        checks.check("tutorialScripts_clean_" + t, ran and code2 == 0 and ok,
+        checks.check("tutorialScripts_clean_" + os.path.basename(t), ran and code2 == 0 and ok,
                      "./Allrun %s: %s; ./Allclean: %s"
                      % (" ".join(opts), "ran" if ran else
                         "failed: " + out[-300:], why))

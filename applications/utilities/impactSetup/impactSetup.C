@@ -18,7 +18,10 @@ Description
     that line is never overwritten.
 
 Usage
-    impactSetup [-case <dir>]
+    impactSetup [-case <dir>] [-cellSize <m>]
+
+    -cellSize replaces the cellSize of the domain entry (a mesh study
+    without editing impactDict).
 
 \*---------------------------------------------------------------------------*/
 
@@ -37,6 +40,12 @@ int main(int argc, char *argv[])
         " phaseProperties) from system/impactDict"
     );
     argList::noParallel();
+    argList::addOption
+    (
+        "cellSize",
+        "m",
+        "the domain's cell size instead of impactDict's domain/cellSize"
+    );
 
     #include "setRootCase.H"
     #include "createTime.H"
@@ -72,6 +81,20 @@ int main(int argc, char *argv[])
     IFstream dictStream(dictFile);
     dictionary impactDict(dictStream);
     impactDict.remove("FoamFile");
+
+    scalar cellSize = 0;
+    if (args.readIfPresent("cellSize", cellSize))
+    {
+        if (!impactDict.isDict("domain"))
+        {
+            FatalErrorInFunction
+                << "-cellSize " << cellSize << ": impactDict has no domain"
+                << " entry (the case's own mesh is used)" << exit(FatalError);
+        }
+        impactDict.subDict("domain").set("cellSize", cellSize);
+        Info<< "Cell size " << cellSize << " m (option -cellSize)" << nl
+            << endl;
+    }
 
     impactProblem problem(runTime, impactDict);
 
