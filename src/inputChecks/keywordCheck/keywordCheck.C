@@ -58,6 +58,41 @@ Foam::word Foam::nearestKeyword(const word& key, const wordList& valid)
 }
 
 
+Foam::fileName Foam::entryOrigin(const entry& e, const dictionary& dict)
+{
+    // A primitive entry read from a file is named "<stream>.<keyword>",
+    // the stream being the file it was read from (also inside a
+    // sub-dictionary, and after it was copied into another dictionary)
+    if (!e.isDict())
+    {
+        const fileName& name = e.name();
+        const word suffix('.' + e.keyword());
+        if
+        (
+            name.size() > suffix.size()
+         && name.compare(name.size() - suffix.size(), suffix.size(), suffix)
+         == 0
+        )
+        {
+            return name.substr(0, name.size() - suffix.size());
+        }
+        return dict.name();
+    }
+
+    // A sub-dictionary keeps its name "<file>.<scope>" when copied: the
+    // file is where one of its primitive entries came from
+    for (const entry& sub : e.dict())
+    {
+        const fileName file(entryOrigin(sub, e.dict()));
+        if (!file.empty() && file != e.dict().name())
+        {
+            return file;
+        }
+    }
+    return e.dict().name();
+}
+
+
 void Foam::checkKeywords
 (
     const dictionary& dict,
@@ -80,10 +115,21 @@ void Foam::checkKeywords
             continue;
         }
 
-        FatalIOErrorInFunction(dict)
-            << owner.c_str() << ": unknown entry " << key
-            << " (line " << e.startLineNumber() << " of "
-            << dict.name().c_str() << ")";
+        // The file the entry came from: a material library file merged
+        // under a phase's dictionary is named, not the phase's file
+        const fileName origin(entryOrigin(e, dict));
+        const label line = e.startLineNumber();
+
+        FatalIOError
+        (
+            FUNCTION_NAME,
+            __FILE__,
+            __LINE__,
+            origin,
+            line,
+            e.endLineNumber()
+        )   << owner.c_str() << ": unknown entry " << key
+            << " (line " << line << " of " << origin.c_str() << ")";
         if (valid.size())
         {
             FatalIOError

@@ -1,6 +1,7 @@
 #include "bodyForces.H"
 #include "uniformDimensionedFields.H"
 #include "IOdictionary.H"
+#include "keywordCheck.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -40,6 +41,18 @@ Foam::bodyForces::bodyForces(const fvMesh& mesh)
     if (accIO.typeHeaderOk<IOdictionary>(true))
     {
         const IOdictionary accDict(accIO);
+
+        // Every entry is an acceleration's sub-dictionary
+        wordList valid;
+        for (const entry& e : accDict)
+        {
+            if (e.isDict())
+            {
+                valid.append(e.keyword());
+            }
+        }
+        checkKeywords(accDict, valid, "bodyAccelerations");
+
         for (const entry& e : accDict)
         {
             if (e.isDict())

@@ -67,6 +67,14 @@ Foam::riemannSolvers::HLLC::HLLC(const dictionary& dict)
 {}
 
 
+Foam::wordList Foam::riemannSolvers::HLLC::keywords() const
+{
+    wordList valid(riemannSolver::keywords());
+    valid.append("waveSpeeds");
+    return valid;
+}
+
+
 Foam::riemannSolvers::HLLC::HLLC(const waveSpeeds estimate)
 :
     riemannSolver(dictionary()),
