@@ -1,7 +1,7 @@
 #include "keywordCheck.H"
 #include "IOstreams.H"
 #include "error.H"
-#include "FlatOutput.H"
+#include "OSspecific.H"
 
 // * * * * * * * * * * * * * * * * Functions * * * * * * * * * * * * * * * * //
 
@@ -60,36 +60,43 @@ Foam::word Foam::nearestKeyword(const word& key, const wordList& valid)
 
 Foam::fileName Foam::entryOrigin(const entry& e, const dictionary& dict)
 {
-    // A primitive entry read from a file is named "<stream>.<keyword>",
-    // the stream being the file it was read from (also inside a
-    // sub-dictionary, and after it was copied into another dictionary)
-    if (!e.isDict())
+    // A sub-dictionary: where its entries came from (a dictionary takes
+    // the name of the one it is added to; its entries keep theirs)
+    if (e.isDict())
     {
-        const fileName& name = e.name();
-        const word suffix('.' + e.keyword());
-        if
-        (
-            name.size() > suffix.size()
-         && name.compare(name.size() - suffix.size(), suffix.size(), suffix)
-         == 0
-        )
+        for (const entry& sub : e.dict())
         {
-            return name.substr(0, name.size() - suffix.size());
+            const fileName file(entryOrigin(sub, e.dict()));
+            if (isFile(file))
+            {
+                return file;
+            }
         }
-        return dict.name();
     }
 
-    // A sub-dictionary keeps its name "<file>.<scope>" when copied: the
-    // file is where one of its primitive entries came from
-    for (const entry& sub : e.dict())
+    // An entry read from a file is named "<file>.<scope>.<keyword>" (a
+    // sub-dictionary "<file>.<scope>"): the file is the longest part of the
+    // name before a '.' that is a file
+    string name(e.isDict() ? e.dict().name() : e.name());
+    while (!name.empty())
     {
-        const fileName file(entryOrigin(sub, e.dict()));
-        if (!file.empty() && file != e.dict().name())
+        if (isFile(name))
         {
-            return file;
+            return name;
         }
+        const auto dot = name.rfind('.');
+        const auto slash = name.rfind('/');
+        if
+        (
+            dot == string::npos
+         || (slash != string::npos && dot < slash)
+        )
+        {
+            break;
+        }
+        name.resize(dot);
     }
-    return e.dict().name();
+    return dict.name();
 }
 
 
@@ -134,7 +141,12 @@ void Foam::checkKeywords
         {
             FatalIOError
                 << "; did you mean " << nearestKeyword(key, valid) << '?'
-                << nl << "Valid entries: " << flatOutput(valid);
+                << nl << "Valid entries: (";
+            forAll(valid, i)
+            {
+                FatalIOError << (i ? " " : "") << valid[i];
+            }
+            FatalIOError << ')';
         }
         else
         {
