@@ -1,6 +1,7 @@
 #include "bodyForces.H"
 #include "uniformDimensionedFields.H"
 #include "IOdictionary.H"
+#include "IFstream.H"
 #include "keywordCheck.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -24,6 +25,10 @@ Foam::bodyForces::bodyForces(const fvMesh& mesh)
     if (gIO.typeHeaderOk<uniformDimensionedVectorField>(true))
     {
         const uniformDimensionedVectorField g(gIO);
+
+        // Its entries, as for the other input (the field reads these two)
+        IFstream gStream(typeFilePath<uniformDimensionedVectorField>(gIO));
+        checkKeywords(dictionary(gStream), {"dimensions", "value"}, "g");
         dictionary gDict;
         gDict.add("type", "uniform");
         gDict.add("value", g.value());
