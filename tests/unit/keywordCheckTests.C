@@ -171,8 +171,10 @@ TEST(keywordCheck, modelsListTheirEntries)
     );
     EXPECT_TRUE
     (
-        plasticModel::New("copper", dictFrom("type vonMises; sigmaY 3e8; tau 0;"))
-            ->keywords().found("n")
+        plasticModel::New
+        (
+            "copper", dictFrom("type vonMises; sigmaY 3e8; tau 0;")
+        )->keywords().found("n")
     );
     EXPECT_EQ
     (

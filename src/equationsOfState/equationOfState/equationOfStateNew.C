@@ -24,6 +24,9 @@ Foam::autoPtr<Foam::equationOfState> Foam::equationOfState::New
     autoPtr<equationOfState> model(cstrIter()(phaseName, dict));
 
     // Each model lists the entries it reads
-    checkKeywords(dict, model->keywords(), "Phase " + phaseName + ", equationOfState");
+    checkKeywords
+    (
+        dict, model->keywords(), "Phase " + phaseName + ", equationOfState"
+    );
     return model;
 }

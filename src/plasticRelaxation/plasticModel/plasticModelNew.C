@@ -24,6 +24,9 @@ Foam::autoPtr<Foam::plasticModel> Foam::plasticModel::New
     autoPtr<plasticModel> model(cstrIter()(phaseName, dict));
 
     // Each model lists the entries it reads
-    checkKeywords(dict, model->keywords(), "Phase " + phaseName + ", plasticity");
+    checkKeywords
+    (
+        dict, model->keywords(), "Phase " + phaseName + ", plasticity"
+    );
     return model;
 }

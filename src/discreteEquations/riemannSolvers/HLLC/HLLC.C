@@ -67,19 +67,19 @@ Foam::riemannSolvers::HLLC::HLLC(const dictionary& dict)
 {}
 
 
+Foam::riemannSolvers::HLLC::HLLC(const waveSpeeds estimate)
+:
+    riemannSolver(dictionary()),
+    waveSpeeds_(estimate)
+{}
+
+
 Foam::wordList Foam::riemannSolvers::HLLC::keywords() const
 {
     wordList valid(riemannSolver::keywords());
     valid.append("waveSpeeds");
     return valid;
 }
-
-
-Foam::riemannSolvers::HLLC::HLLC(const waveSpeeds estimate)
-:
-    riemannSolver(dictionary()),
-    waveSpeeds_(estimate)
-{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

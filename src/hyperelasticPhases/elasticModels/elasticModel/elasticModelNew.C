@@ -24,6 +24,9 @@ Foam::autoPtr<Foam::elasticModel> Foam::elasticModel::New
     autoPtr<elasticModel> model(cstrIter()(phaseName, dict));
 
     // Each model lists the entries it reads
-    checkKeywords(dict, model->keywords(), "Phase " + phaseName + ", elasticity");
+    checkKeywords
+    (
+        dict, model->keywords(), "Phase " + phaseName + ", elasticity"
+    );
     return model;
 }

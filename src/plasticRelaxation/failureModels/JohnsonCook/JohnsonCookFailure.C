@@ -100,7 +100,10 @@ Foam::failureModels::JohnsonCook::JohnsonCook
 Foam::wordList Foam::failureModels::JohnsonCook::keywords() const
 {
     wordList valid(failureModel::keywords());
-    valid.append(wordList({"D1", "D2", "D3", "D4", "D5", "epsDot0", "Tr", "Tm"}));
+    valid.append
+    (
+        wordList({"D1", "D2", "D3", "D4", "D5", "epsDot0", "Tr", "Tm"})
+    );
     return valid;
 }
 

@@ -33,6 +33,11 @@ Foam::autoPtr<Foam::yieldStress> Foam::yieldStress::New
     autoPtr<yieldStress> model(cstrIter()(phaseName, dict));
 
     // Each model lists the entries it reads
-    checkKeywords(dict, model->keywords(), "Phase " + phaseName + ", plasticity yieldStress");
+    checkKeywords
+    (
+        dict,
+        model->keywords(),
+        "Phase " + phaseName + ", plasticity yieldStress"
+    );
     return model;
 }
