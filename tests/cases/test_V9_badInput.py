@@ -49,9 +49,24 @@ directories holds a NaN.
     unknownThreshold
                   alphaMinr 1e-3 in phaseProperties (an entry no rule reads:
                   the message names it and lists the valid ones)
+    misspelledTopLevel, misspelledPhase, misspelledEquationOfState,
+    misspelledElasticity, misspelledPlasticity, misspelledYieldStress,
+    misspelledFailure, misspelledDiscreteEquations, misspelledMaterialFile
+                  a misspelled entry in each kind of dictionary (strict
+                  input): pVacum in phaseProperties, failur in a phase, Cvv
+                  in an equationOfState, muu in elasticity, nn in
+                  plasticity, epsDot in a Johnson-Cook yieldStress,
+                  spallTim in failure, predictorRelaxaton in
+                  discreteEquations, pressureRelaxaton in a material file
+                  of constant/materials. The message names the dictionary,
+                  the entry, its line and file (the material file for the
+                  last), the nearest valid word and the valid ones.
     gasTraceRatio gasTraceRatio -1 in phaseProperties (a ratio of volumes
                   is not negative)
-The valid base case must run to its end time (control).
+The valid base case must run to its end time (control), and its log
+holds the block of defaults once, before the time loop, listing defaults
+it uses (waveSpeeds Davis, n 0, pVacuum 1, ...) and none of the entries it
+gives (defaultsPrintedOnce).
 
 Unphysical runs (must stop during the run with a FatalError whose message
 says 'unphysical state' and names the phase, the cell, the time and the
@@ -255,7 +270,8 @@ BAD_INPUT = [
     ("unknownThreshold",
      lambda c: edit(c, PP, "phases (copper air);",
                     "phases (copper air);\nalphaMinr 1e-3;"),
-     [r"Unknown entry alphaMinr", r"alphaMinor", r"dustDensityRatio"],
+     [r"phaseProperties: unknown entry alphaMinr",
+      r"did you mean alphaMin(or)?\?", r"alphaMinor", r"dustDensityRatio"],
      "alphaMinr 1e-3 (a misspelled threshold)"),
     ("gasTraceRatio",
      lambda c: edit(c, PP, "phases (copper air);",
@@ -297,6 +313,98 @@ BAD_INPUT += [
      [r"Phase air: unknown pressureRelaxation adiabatic",
       r"valid: \(constantPressure isentropic\)"],
      "air pressureRelaxation adiabatic"),
+]
+
+
+# A material library file in the case (constant/materials/myCopper): the
+# copper of the base case, with one misspelled entry
+MY_COPPER = """FoamFile { version 2.0; format ascii; class dictionary;
+           object myCopper; }
+type            solid;
+equationOfState { type stiffenedGas; gamma 4.22; pInf 3.42e10; }
+elasticity      { type separable; rho0 8900; mu 4.5e10; a 0.5; }
+plasticity      { type vonMises; sigmaY 3e8; tau 0; }
+pressureRelaxaton constantPressure;
+"""
+
+
+def my_copper(case):
+    """The copper phase as `material myCopper;` from the case's library
+    file, which misspells pressureRelaxation."""
+    os.makedirs(os.path.join(case, "constant", "materials"), exist_ok=True)
+    with open(os.path.join(case, "constant", "materials", "myCopper"),
+              "w") as f:
+        f.write(MY_COPPER)
+    edit(case, PP, """    type            solid;
+    equationOfState { type stiffenedGas; gamma 4.22; pInf 3.42e10; }
+    elasticity      { type separable; rho0 8900; mu 4.5e10; a 0.5; }
+    plasticity      { type vonMises; sigmaY 3e8; tau 0; }""",
+         "    material        myCopper;")
+
+
+def misspelled(name, modify, owner, entry, nearest, what):
+    """A V9 case: a misspelled entry in one kind of dictionary; the message
+    names the dictionary's owner, the entry and the nearest valid word."""
+    return ("misspelled" + name, modify,
+            [r"%s: unknown entry %s \(line \d+ of " % (re.escape(owner),
+                                                       entry),
+             r"did you mean %s\?" % nearest, r"Valid entries: \("],
+            what)
+
+
+# Strict input (docs/numerics.md appendix C): an entry no reader knows
+# stops the run, in every dictionary impactFoam reads
+BAD_INPUT += [
+    misspelled("TopLevel",
+               lambda c: edit(c, PP, "phases (copper air);",
+                              "phases (copper air);\npVacum 1;"),
+               "phaseProperties", "pVacum", "pVacuum",
+               "phaseProperties pVacum 1"),
+    misspelled("Phase",
+               lambda c: edit(c, PP, "sigmaY 3e8; tau 0; }",
+                              "sigmaY 3e8; tau 0; }\n"
+                              "    failur { type spall; sigmaSpall 1e9; }"),
+               "Phase copper", "failur", "failure",
+               "copper failur { type spall; ... }"),
+    misspelled("EquationOfState",
+               lambda c: edit(c, PP, "gamma 1.4; pInf 0; }",
+                              "gamma 1.4; pInf 0; Cvv 718; }"),
+               "Phase air, equationOfState", "Cvv", "Cv",
+               "air equationOfState Cvv 718"),
+    misspelled("Elasticity",
+               lambda c: edit(c, PP, "a 0.5;", "a 0.5; muu 4.5e10;"),
+               "Phase copper, elasticity", "muu", "mu",
+               "copper elasticity muu"),
+    misspelled("Plasticity",
+               lambda c: edit(c, PP, "tau 0;", "tau 0; nn 0.5;"),
+               "Phase copper, plasticity", "nn", "n",
+               "copper plasticity nn 0.5"),
+    misspelled("YieldStress",
+               lambda c: (edit(c, PP, "sigmaY 3e8;",
+                               JC.replace("Tm 1356;",
+                                          "Tm 1356; epsDot 1;")),
+                          edit(c, PP, "pInf 3.42e10; }",
+                               "pInf 3.42e10; Cv 383; }")),
+               "Phase copper, plasticity yieldStress", "epsDot", "epsDot0",
+               "Johnson-Cook yieldStress epsDot 1"),
+    misspelled("Failure",
+               lambda c: edit(c, PP, "sigmaY 3e8; tau 0; }",
+                              "sigmaY 3e8; tau 0; }\n    failure { type "
+                              "spall; sigmaSpall 1e9; spallTim 1e-7; }"),
+               "Phase copper, failure", "spallTim", "spallTime",
+               "copper failure spall with spallTim"),
+    misspelled("DiscreteEquations",
+               lambda c: edit(c, FS, "riemannSolver   HLLC;",
+                              "riemannSolver   HLLC; predictorRelaxaton no;"),
+               "discreteEquations", "predictorRelaxaton",
+               "predictorRelaxation",
+               "discreteEquations predictorRelaxaton no"),
+    ("misspelledMaterialFile",
+     my_copper,
+     [r"Phase copper: unknown entry pressureRelaxaton \(line 7 of "
+      r"[^\n]*constant/materials/myCopper\)",
+      r"did you mean pressureRelaxation\?"],
+     "constant/materials/myCopper with pressureRelaxaton"),
 ]
 
 
@@ -552,6 +660,42 @@ def check_control():
     checks.check(tag, ok, "valid base case: exit code %s, time directories "
                  "%s (end time %g)" % (code, " ".join("%g" % t
                                                       for t in times), end))
+    check_defaults(log)
+
+
+# Defaults the base case takes (it gives riemannSolver, tau and the
+# phases' equations of state, and nothing else)
+DEFAULTS_USED = [
+    "discreteEquations: waveSpeeds Davis",
+    "discreteEquations: order 2",
+    "Phase copper, plasticity: n 0",
+    "Phase air: pressureRelaxation constantPressure",
+    "phaseProperties: pVacuum 1",
+]
+GIVEN = ["riemannSolver", "tau", "gamma"]
+
+
+def check_defaults(log):
+    """The defaults block: printed once, before the time loop, listing
+    defaults the run uses and no entry the case gives."""
+    tag = "V9_defaultsPrintedOnce"
+    header = "Defaults used (not given in the input):"
+    count = log.count(header)
+    block = []
+    if count:
+        for line in log[log.find(header) + len(header):].splitlines()[1:]:
+            if not line.startswith("    "):
+                break
+            block.append(line.strip())
+    missing = [d for d in DEFAULTS_USED if d not in block]
+    given = [l for l in block if l.split(": ", 1)[-1].split()[0] in GIVEN]
+    before_loop = 0 <= log.find(header) < log.find("Starting time loop")
+    checks.check(tag, count == 1 and not missing and not given
+                 and before_loop,
+                 "block printed %d time(s)%s, %d default(s) listed; "
+                 "missing %s; given entries listed %s"
+                 % (count, " before the time loop" if before_loop else "",
+                    len(block), missing or "none", given or "none"))
 
 
 _NUM = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"

@@ -61,6 +61,12 @@ public:
         Tm_(readPositive(dict, "Tm"))
     {}
 
+    //- A model declares the entries it reads (strict input)
+    virtual wordList keywords() const
+    {
+        return {"type", "A", "B", "C", "Tm"};
+    }
+
     virtual scalar sigmaY
     (
         const scalar epsP,

@@ -34,6 +34,7 @@ Description
 #include "bodyForces.H"
 #include "stepControl.H"
 #include "stepReport.H"
+#include "inputDefaults.H"
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
@@ -86,6 +87,9 @@ int main(int argc, char *argv[])
     bodyForces forces(mesh);
     stepControl step(runTime, phases, dem, relaxation, forces);
     stepReport report(phases, relaxation, dem, voidCells);
+
+    // The defaults the models took for entries not given, in one block
+    inputDefaults::print(Info);
 
     report.logTotals(true);
 

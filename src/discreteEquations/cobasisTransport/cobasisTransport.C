@@ -4,6 +4,14 @@
 
 using Foam::foamEigen::toEigen;
 
+// * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * //
+
+const Foam::wordList Foam::cobasisTransport::keywords
+(
+    {"cobasisRotation"}
+);
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::cobasisTransport::cobasisTransport

@@ -2,6 +2,7 @@
 #include "faceFrame.H"
 #include "wedgePolyPatch.H"
 #include "foamEigen.H"
+#include "keywordCheck.H"
 
 using Foam::foamEigen::toEigen;
 
@@ -46,6 +47,14 @@ Foam::demSolver::demSolver
     }
 
     setOffsets();
+
+    // Each part lists the entries it reads
+    wordList valid(reconstruction_->keywords());
+    valid.append(assembly_.riemann().keywords());
+    valid.append(cobasisTransport::keywords);
+    valid.append(firstOrderFallback::keywords);
+    valid.append(wedgeImages::keywords);
+    checkKeywords(schemeDict, valid, "discreteEquations");
 
     Info<< "Discrete equations: Riemann solver " << assembly_.riemann().type()
         << ", reconstruction ";

@@ -1,5 +1,14 @@
 #include "firstOrderFallback.H"
+#include "inputDefaults.H"
 #include "syncTools.H"
+
+// * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * //
+
+const Foam::wordList Foam::firstOrderFallback::keywords
+(
+    {"fallbackRounds", "fallbackInterfaces"}
+);
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -11,8 +20,20 @@ Foam::firstOrderFallback::firstOrderFallback
 :
     phases_(phases),
     mesh_(phases.mesh()),
-    maxRounds_(schemeDict.getOrDefault<label>("fallbackRounds", 3)),
-    interfaces_(schemeDict.getOrDefault<bool>("fallbackInterfaces", false)),
+    maxRounds_
+    (
+        inputDefaults::get<label>
+        (
+            schemeDict, "fallbackRounds", 3, "discreteEquations"
+        )
+    ),
+    interfaces_
+    (
+        inputDefaults::get<Switch>
+        (
+            schemeDict, "fallbackInterfaces", Switch(false), "discreteEquations"
+        )
+    ),
     cells_(mesh_.nCells(), false),
     faces_(mesh_.nFaces(), false),
     nFaces_(0),

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "phaseRegimes.H"
+#include "inputDefaults.H"
 #include "error.H"
 #include "Pair.H"
 #include <cmath>
@@ -29,15 +30,30 @@ const Foam::List<Foam::Pair<Foam::word>> Foam::phaseRegimes::removedKeywords
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+namespace
+{
+    // An optional scalar of phaseProperties, its default noted
+    Foam::scalar get
+    (
+        const Foam::dictionary& dict,
+        const Foam::word& key,
+        const Foam::scalar deflt
+    )
+    {
+        return Foam::inputDefaults::get(dict, key, deflt, "phaseProperties");
+    }
+}
+
+
 Foam::phaseRegimes::phaseRegimes(const dictionary& dict)
 :
-    alphaMin_(dict.getOrDefault<scalar>("alphaMin", 1e-8)),
-    alphaTrace_(dict.getOrDefault<scalar>("alphaTrace", 1e-6)),
-    alphaMinor_(dict.getOrDefault<scalar>("alphaMinor", 1e-3)),
-    massFractionMinor_(dict.getOrDefault<scalar>("massFractionMinor", 1e-6)),
-    gasTraceRatio_(dict.getOrDefault<scalar>("gasTraceRatio", 1)),
-    dustDensityRatio_(dict.getOrDefault<scalar>("dustDensityRatio", 0.5)),
-    pVacuum_(dict.getOrDefault<scalar>("pVacuum", 1))
+    alphaMin_(get(dict, "alphaMin", 1e-8)),
+    alphaTrace_(get(dict, "alphaTrace", 1e-6)),
+    alphaMinor_(get(dict, "alphaMinor", 1e-3)),
+    massFractionMinor_(get(dict, "massFractionMinor", 1e-6)),
+    gasTraceRatio_(get(dict, "gasTraceRatio", 1)),
+    dustDensityRatio_(get(dict, "dustDensityRatio", 0.5)),
+    pVacuum_(get(dict, "pVacuum", 1))
 {
     for (const Pair<word>& removed : removedKeywords)
     {

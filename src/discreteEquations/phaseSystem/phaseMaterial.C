@@ -49,7 +49,14 @@ void Foam::phaseMaterial::mergeOnto(dictionary& base, const dictionary& top)
                 continue;
             }
         }
-        base.set(e.clone(base).ptr());
+        // Adding renames an entry after its new dictionary; a keyword keeps
+        // the name of the file it came from (checkKeywords names that file)
+        const fileName origin(e.name());
+        entry* added = base.set(e.clone(base).ptr());
+        if (added && !added->isDict())
+        {
+            added->name() = origin;
+        }
     }
 }
 

@@ -1,4 +1,6 @@
 #include "phaseModel.H"
+#include "keywordCheck.H"
+#include "inputDefaults.H"
 #include "readOption.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -60,7 +62,10 @@ bool Foam::phaseModel::readWriteTemperature(const dictionary& dict) const
 {
     const bool needed = needsTemperature();
     const bool write =
-        dict.getOrDefault<Switch>("writeTemperature", Switch(needed));
+        inputDefaults::get<Switch>
+        (
+            dict, "writeTemperature", Switch(needed), "Phase " + name()
+        );
     if (write && !law_.eos().hasTemperature())
     {
         FatalIOErrorInFunction(dict)
@@ -71,6 +76,14 @@ bool Foam::phaseModel::readWriteTemperature(const dictionary& dict) const
     }
     return write;
 }
+
+
+// * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * //
+
+const Foam::wordList Foam::phaseModel::keywords
+(
+    {"material", "writeTemperature", "passiveScalars"}
+);
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -122,6 +135,14 @@ Foam::phaseModel::phaseModel
     // does not give
     inelastic_ = inelasticModel::New(law_, dict);
     const bool writeT = readWriteTemperature(dict);
+
+    // The phase's entries: its own and those its models read from it (an
+    // entry from the material library file is reported in that file)
+    wordList valid(keywords);
+    valid.append(hyperelasticPhase::keywords);
+    valid.append(relaxationPath_->keywords());
+    valid.append(inelastic_->phaseKeywords());
+    checkKeywords(dict, valid, "Phase " + name);
 
     IOobject pIO
     (

@@ -1,4 +1,5 @@
 #include "phaseSystem.H"
+#include "keywordCheck.H"
 #include "phaseMaterial.H"
 #include "alphaClosure.H"
 #include "foamEigen.H"
@@ -92,17 +93,7 @@ void Foam::phaseSystem::checkKeywords() const
     {
         valid.append(removed.first());
     }
-    for (const word& key : dict_.toc())
-    {
-        if (!valid.found(key))
-        {
-            FatalIOErrorInFunction(dict_)
-                << "Unknown entry " << key << " in " << dict_.objectPath()
-                << nl << "Valid entries: the phases " << phaseNames_
-                << ", phases and " << phaseRegimes::keywords
-                << exit(FatalIOError);
-        }
-    }
+    Foam::checkKeywords(dict_, valid, "phaseProperties");
 }
 
 

@@ -1,8 +1,17 @@
 #include "wedgeImages.H"
+#include "inputDefaults.H"
 #include "wedgePolyPatch.H"
 #include "foamEigen.H"
 
 using Foam::foamEigen::toEigen;
+
+
+// * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * //
+
+const Foam::wordList Foam::wedgeImages::keywords
+(
+    {"wedgeImages"}
+);
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -45,7 +54,13 @@ void Foam::wedgeImages::pair
     {
         return;
     }
-    if (!schemeDict.getOrDefault<bool>("wedgeImages", true))
+    if
+    (
+        !inputDefaults::get<Switch>
+        (
+            schemeDict, "wedgeImages", Switch(true), "discreteEquations"
+        )
+    )
     {
         Info<< "Wedge faces: each solved (wedgeImages no)" << nl;
         return;

@@ -147,6 +147,12 @@ Foam::equationsOfState::MieGruneisen::MieGruneisen
 }
 
 
+Foam::wordList Foam::equationsOfState::MieGruneisen::keywords() const
+{
+    return {"type", "rho0", "c0", "s", "Gamma0", "Cv", "T0"};
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::scalar Foam::equationsOfState::MieGruneisen::pRef

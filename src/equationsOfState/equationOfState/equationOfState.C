@@ -22,6 +22,12 @@ Foam::equationOfState::equationOfState
 {}
 
 
+Foam::wordList Foam::equationOfState::keywords() const
+{
+    return {"type"};
+}
+
+
 Foam::scalar Foam::equationOfState::fundamentalDerivative
 (
     const scalar rho,

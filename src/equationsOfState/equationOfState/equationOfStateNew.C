@@ -1,4 +1,5 @@
 #include "equationOfState.H"
+#include "keywordCheck.H"
 
 Foam::autoPtr<Foam::equationOfState> Foam::equationOfState::New
 (
@@ -20,5 +21,12 @@ Foam::autoPtr<Foam::equationOfState> Foam::equationOfState::New
             << exit(FatalIOError);
     }
 
-    return cstrIter()(phaseName, dict);
+    autoPtr<equationOfState> model(cstrIter()(phaseName, dict));
+
+    // Each model lists the entries it reads
+    checkKeywords
+    (
+        dict, model->keywords(), "Phase " + phaseName + ", equationOfState"
+    );
+    return model;
 }

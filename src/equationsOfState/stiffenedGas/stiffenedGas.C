@@ -46,6 +46,12 @@ Foam::equationsOfState::stiffenedGas::stiffenedGas
 }
 
 
+Foam::wordList Foam::equationsOfState::stiffenedGas::keywords() const
+{
+    return {"type", "gamma", "pInf", "Cv"};
+}
+
+
 void Foam::equationsOfState::stiffenedGas::noTemperature
 (
     const char* function

@@ -1,5 +1,13 @@
 #include "hyperelasticPhase.H"
 
+// * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * //
+
+const Foam::wordList Foam::hyperelasticPhase::keywords
+(
+    {"type", "equationOfState", "elasticity"}
+);
+
+
 Foam::hyperelasticPhase::hyperelasticPhase
 (
     const word& name,

@@ -1,7 +1,7 @@
 #include "keywordCheck.H"
 #include "IOstreams.H"
 #include "error.H"
-#include "FlatOutput.H"
+#include "OSspecific.H"
 
 // * * * * * * * * * * * * * * * * Functions * * * * * * * * * * * * * * * * //
 
@@ -58,6 +58,48 @@ Foam::word Foam::nearestKeyword(const word& key, const wordList& valid)
 }
 
 
+Foam::fileName Foam::entryOrigin(const entry& e, const dictionary& dict)
+{
+    // A sub-dictionary: where its entries came from (a dictionary takes
+    // the name of the one it is added to; its entries keep theirs)
+    if (e.isDict())
+    {
+        for (const entry& sub : e.dict())
+        {
+            const fileName file(entryOrigin(sub, e.dict()));
+            if (isFile(file))
+            {
+                return file;
+            }
+        }
+    }
+
+    // An entry read from a file is named "<file>.<scope>.<keyword>" (a
+    // sub-dictionary "<file>.<scope>"): the file is the longest part of the
+    // name before a '.' that is a file
+    string name(e.isDict() ? e.dict().name() : e.name());
+    while (!name.empty())
+    {
+        if (isFile(name))
+        {
+            return name;
+        }
+        const auto dot = name.rfind('.');
+        const auto slash = name.rfind('/');
+        if
+        (
+            dot == string::npos
+         || (slash != string::npos && dot < slash)
+        )
+        {
+            break;
+        }
+        name.resize(dot);
+    }
+    return dict.name();
+}
+
+
 void Foam::checkKeywords
 (
     const dictionary& dict,
@@ -80,15 +122,31 @@ void Foam::checkKeywords
             continue;
         }
 
-        FatalIOErrorInFunction(dict)
-            << owner.c_str() << ": unknown entry " << key
-            << " (line " << e.startLineNumber() << " of "
-            << dict.name().c_str() << ")";
+        // The file the entry came from: a material library file merged
+        // under a phase's dictionary is named, not the phase's file
+        const fileName origin(entryOrigin(e, dict));
+        const label line = e.startLineNumber();
+
+        FatalIOError
+        (
+            FUNCTION_NAME,
+            __FILE__,
+            __LINE__,
+            origin,
+            line,
+            e.endLineNumber()
+        )   << owner.c_str() << ": unknown entry " << key
+            << " (line " << line << " of " << origin.c_str() << ")";
         if (valid.size())
         {
             FatalIOError
                 << "; did you mean " << nearestKeyword(key, valid) << '?'
-                << nl << "Valid entries: " << flatOutput(valid);
+                << nl << "Valid entries: (";
+            forAll(valid, i)
+            {
+                FatalIOError << (i ? " " : "") << valid[i];
+            }
+            FatalIOError << ')';
         }
         else
         {

@@ -16,3 +16,9 @@ Foam::plasticModel::plasticModel
 {}
 
 
+Foam::wordList Foam::plasticModel::keywords() const
+{
+    return {"type"};
+}
+
+

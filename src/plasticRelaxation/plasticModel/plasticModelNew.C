@@ -1,4 +1,5 @@
 #include "plasticModel.H"
+#include "keywordCheck.H"
 
 Foam::autoPtr<Foam::plasticModel> Foam::plasticModel::New
 (
@@ -20,5 +21,12 @@ Foam::autoPtr<Foam::plasticModel> Foam::plasticModel::New
             << exit(FatalIOError);
     }
 
-    return cstrIter()(phaseName, dict);
+    autoPtr<plasticModel> model(cstrIter()(phaseName, dict));
+
+    // Each model lists the entries it reads
+    checkKeywords
+    (
+        dict, model->keywords(), "Phase " + phaseName + ", plasticity"
+    );
+    return model;
 }

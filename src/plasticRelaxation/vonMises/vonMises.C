@@ -1,4 +1,5 @@
 #include "vonMises.H"
+#include "inputDefaults.H"
 #include "constantYieldStress.H"
 #include "linearYieldStress.H"
 #include "addToRunTimeSelectionTable.H"
@@ -100,7 +101,11 @@ Foam::vonMisesReturn Foam::plasticModels::vonMises::newReturn
 )
 {
     const scalar tau = dict.get<scalar>("tau");
-    const scalar n = dict.getOrDefault<scalar>("n", 0);
+    const scalar n =
+        inputDefaults::get<scalar>
+        (
+            dict, "n", 0, "Phase " + phaseName + ", plasticity"
+        );
 
     if (!(tau >= 0))
     {
@@ -132,6 +137,12 @@ Foam::plasticModels::vonMises::vonMises
     yieldStress_(newYieldStress(phaseName, dict)),
     return_(newReturn(phaseName, dict))
 {}
+
+
+Foam::wordList Foam::plasticModels::vonMises::keywords() const
+{
+    return {"type", "tau", "n", "yieldStress", "sigmaY", "sigmaY0", "H"};
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

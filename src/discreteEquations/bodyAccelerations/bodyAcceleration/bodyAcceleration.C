@@ -1,4 +1,5 @@
 #include "bodyAcceleration.H"
+#include "keywordCheck.H"
 
 namespace Foam
 {
@@ -14,6 +15,12 @@ Foam::bodyAcceleration::bodyAcceleration
 :
     name_(name)
 {}
+
+
+Foam::wordList Foam::bodyAcceleration::keywords() const
+{
+    return {"type"};
+}
 
 
 Foam::autoPtr<Foam::bodyAcceleration> Foam::bodyAcceleration::New
@@ -36,5 +43,9 @@ Foam::autoPtr<Foam::bodyAcceleration> Foam::bodyAcceleration::New
             << exit(FatalIOError);
     }
 
-    return cstrIter()(name, dict);
+    autoPtr<bodyAcceleration> model(cstrIter()(name, dict));
+
+    // Each model lists the entries it reads
+    checkKeywords(dict, model->keywords(), "bodyAcceleration " + name);
+    return model;
 }

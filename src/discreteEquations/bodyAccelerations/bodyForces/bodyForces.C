@@ -1,6 +1,8 @@
 #include "bodyForces.H"
 #include "uniformDimensionedFields.H"
 #include "IOdictionary.H"
+#include "IFstream.H"
+#include "keywordCheck.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -23,6 +25,10 @@ Foam::bodyForces::bodyForces(const fvMesh& mesh)
     if (gIO.typeHeaderOk<uniformDimensionedVectorField>(true))
     {
         const uniformDimensionedVectorField g(gIO);
+
+        // Its entries, as for the other input (the field reads these two)
+        IFstream gStream(typeFilePath<uniformDimensionedVectorField>(gIO));
+        checkKeywords(dictionary(gStream), {"dimensions", "value"}, "g");
         dictionary gDict;
         gDict.add("type", "uniform");
         gDict.add("value", g.value());
@@ -40,6 +46,18 @@ Foam::bodyForces::bodyForces(const fvMesh& mesh)
     if (accIO.typeHeaderOk<IOdictionary>(true))
     {
         const IOdictionary accDict(accIO);
+
+        // Every entry is an acceleration's sub-dictionary
+        wordList valid;
+        for (const entry& e : accDict)
+        {
+            if (e.isDict())
+            {
+                valid.append(e.keyword());
+            }
+        }
+        checkKeywords(accDict, valid, "bodyAccelerations");
+
         for (const entry& e : accDict)
         {
             if (e.isDict())

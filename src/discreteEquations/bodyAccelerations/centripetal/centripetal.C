@@ -29,3 +29,9 @@ Foam::bodyAccelerations::centripetal::centripetal
     }
     axis_ /= mag(axis_);
 }
+
+
+Foam::wordList Foam::bodyAccelerations::centripetal::keywords() const
+{
+    return {"type", "omega", "axis", "origin"};
+}

@@ -60,6 +60,16 @@ Foam::reconstructions::MUSCLHancock::MUSCLHancock
 }
 
 
+Foam::wordList Foam::reconstructions::MUSCLHancock::keywords() const
+{
+    wordList valid(reconstruction::keywords());
+    valid.append("cobasisLimiter");
+    valid.append(hancockPredictor::keywords);
+    valid.append(alphaProfile_->keywords());
+    return valid;
+}
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::reconstructions::MUSCLHancock::alphaRange

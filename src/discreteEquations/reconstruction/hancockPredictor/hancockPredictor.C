@@ -1,6 +1,15 @@
 #include "hancockPredictor.H"
+#include "inputDefaults.H"
 
 using Foam::foamEigen::toEigen;
+
+// * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * //
+
+const Foam::wordList Foam::hancockPredictor::keywords
+(
+    {"predictorRelaxation"}
+);
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -11,7 +20,13 @@ Foam::hancockPredictor::hancockPredictor
 )
 :
     phases_(phases),
-    relax_(dict.getOrDefault<Switch>("predictorRelaxation", true))
+    relax_
+    (
+        inputDefaults::get<Switch>
+        (
+            dict, "predictorRelaxation", Switch(true), "discreteEquations"
+        )
+    )
 {}
 
 

@@ -45,6 +45,12 @@ Foam::reconstruction::reconstruction
 {}
 
 
+Foam::wordList Foam::reconstruction::keywords() const
+{
+    return {"order", "reconstruction", "velocityLimiter"};
+}
+
+
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
 bool Foam::reconstruction::limitVelocity(const dictionary& dict)

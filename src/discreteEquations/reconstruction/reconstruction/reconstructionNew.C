@@ -1,4 +1,5 @@
 #include "reconstruction.H"
+#include "inputDefaults.H"
 
 Foam::autoPtr<Foam::reconstruction> Foam::reconstruction::New
 (
@@ -7,7 +8,10 @@ Foam::autoPtr<Foam::reconstruction> Foam::reconstruction::New
     const dictionary& dict
 )
 {
-    const label order(dict.getOrDefault<label>("order", 2));
+    const label order
+    (
+        inputDefaults::get<label>(dict, "order", 2, "discreteEquations")
+    );
     if (order != 1 && order != 2)
     {
         FatalIOErrorInFunction(dict)
@@ -16,10 +20,12 @@ Foam::autoPtr<Foam::reconstruction> Foam::reconstruction::New
     }
     const word modelType
     (
-        dict.getOrDefault<word>
+        inputDefaults::get<word>
         (
+            dict,
             "reconstruction",
-            order == 1 ? "firstOrder" : "MUSCLHancock"
+            order == 1 ? "firstOrder" : "MUSCLHancock",
+            "discreteEquations"
         )
     );
 

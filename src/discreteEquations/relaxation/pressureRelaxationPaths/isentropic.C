@@ -60,4 +60,12 @@ Foam::pressureRelaxationPaths::isentropic::isentropic
 }
 
 
+Foam::wordList Foam::pressureRelaxationPaths::isentropic::keywords() const
+{
+    wordList valid(pressureRelaxationPath::keywords());
+    valid.append(wordList({"cavitationPressure", "referenceIsentrope"}));
+    return valid;
+}
+
+
 // ************************************************************************* //

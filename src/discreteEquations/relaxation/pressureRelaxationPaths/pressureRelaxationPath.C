@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "pressureRelaxationPath.H"
+#include "inputDefaults.H"
 
 namespace Foam
 {
@@ -24,6 +25,12 @@ Foam::pressureRelaxationPath::pressureRelaxationPath
 {}
 
 
+Foam::wordList Foam::pressureRelaxationPath::keywords() const
+{
+    return {"pressureRelaxation"};
+}
+
+
 // * * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * //
 
 Foam::autoPtr<Foam::pressureRelaxationPath> Foam::pressureRelaxationPath::New
@@ -34,7 +41,13 @@ Foam::autoPtr<Foam::pressureRelaxationPath> Foam::pressureRelaxationPath::New
 {
     const word pathType
     (
-        phaseDict.getOrDefault<word>("pressureRelaxation", "constantPressure")
+        inputDefaults::get<word>
+        (
+            phaseDict,
+            "pressureRelaxation",
+            "constantPressure",
+            "Phase " + law.name()
+        )
     );
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(pathType);
     if (!cstrIter.found())

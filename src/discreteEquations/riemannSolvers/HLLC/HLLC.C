@@ -74,6 +74,14 @@ Foam::riemannSolvers::HLLC::HLLC(const waveSpeeds estimate)
 {}
 
 
+Foam::wordList Foam::riemannSolvers::HLLC::keywords() const
+{
+    wordList valid(riemannSolver::keywords());
+    valid.append("waveSpeeds");
+    return valid;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::riemannSolution Foam::riemannSolvers::HLLC::solve

@@ -9,3 +9,9 @@ namespace Foam
 
 Foam::riemannSolver::riemannSolver(const dictionary&)
 {}
+
+
+Foam::wordList Foam::riemannSolver::keywords() const
+{
+    return {"riemannSolver"};
+}

@@ -1,11 +1,15 @@
 #include "riemannSolver.H"
+#include "inputDefaults.H"
 
 Foam::autoPtr<Foam::riemannSolver> Foam::riemannSolver::New
 (
     const dictionary& dict
 )
 {
-    const word modelType(dict.getOrDefault<word>("riemannSolver", "HLLC"));
+    const word modelType(inputDefaults::get<word>
+        (
+            dict, "riemannSolver", "HLLC", "discreteEquations"
+        ));
 
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
 

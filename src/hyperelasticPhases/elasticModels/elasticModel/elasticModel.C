@@ -31,6 +31,12 @@ Foam::elasticModel::elasticModel
 }
 
 
+Foam::wordList Foam::elasticModel::keywords() const
+{
+    return {"type", "rho0", "mu"};
+}
+
+
 Foam::cobasis::matrix Foam::elasticModel::dS
 (
     const cobasis::matrix& A,

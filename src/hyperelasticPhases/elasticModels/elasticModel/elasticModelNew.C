@@ -1,4 +1,5 @@
 #include "elasticModel.H"
+#include "keywordCheck.H"
 
 Foam::autoPtr<Foam::elasticModel> Foam::elasticModel::New
 (
@@ -20,5 +21,12 @@ Foam::autoPtr<Foam::elasticModel> Foam::elasticModel::New
             << exit(FatalIOError);
     }
 
-    return cstrIter()(phaseName, dict);
+    autoPtr<elasticModel> model(cstrIter()(phaseName, dict));
+
+    // Each model lists the entries it reads
+    checkKeywords
+    (
+        dict, model->keywords(), "Phase " + phaseName + ", elasticity"
+    );
+    return model;
 }

@@ -35,6 +35,14 @@ Foam::elasticModels::separable::separable
 }
 
 
+Foam::wordList Foam::elasticModels::separable::keywords() const
+{
+    wordList valid(elasticModel::keywords());
+    valid.append("a");
+    return valid;
+}
+
+
 Foam::elasticModels::separable::separable
 (
     const word& phaseName,

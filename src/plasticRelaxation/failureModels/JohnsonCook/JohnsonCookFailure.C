@@ -1,4 +1,5 @@
 #include "JohnsonCookFailure.H"
+#include "inputDefaults.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -32,7 +33,14 @@ Foam::scalar Foam::failureModels::JohnsonCook::readShared
     {
         return law->get<scalar>(name);
     }
-    if (deflt < 0)
+    if (deflt >= 0)
+    {
+        inputDefaults::note
+        (
+            "Phase " + phaseName_ + ", failure", name, Foam::name(deflt)
+        );
+    }
+    else
     {
         FatalIOErrorInFunction(dict)
             << "Phase " << phaseName_ << ": failure JohnsonCook with D5 = "
@@ -56,8 +64,8 @@ Foam::failureModels::JohnsonCook::JohnsonCook
     D1_(read(dict, "D1")),
     D2_(read(dict, "D2")),
     D3_(read(dict, "D3")),
-    D4_(dict.getOrDefault<scalar>("D4", 0)),
-    D5_(dict.getOrDefault<scalar>("D5", 0)),
+    D4_(readOptional(dict, "D4", 0)),
+    D5_(readOptional(dict, "D5", 0)),
     epsDot0_(readShared(dict, phaseDict, "epsDot0", 1)),
     rEpsDot0_(1),
     Tr_(0),
@@ -86,6 +94,17 @@ Foam::failureModels::JohnsonCook::JohnsonCook
         Tm_ = readShared(dict, phaseDict, "Tm", -1);
         if (!(Tm_ > Tr_)) badEntry(dict, "Tm - Tr", Tm_ - Tr_, "> 0");
     }
+}
+
+
+Foam::wordList Foam::failureModels::JohnsonCook::keywords() const
+{
+    wordList valid(failureModel::keywords());
+    valid.append
+    (
+        wordList({"D1", "D2", "D3", "D4", "D5", "epsDot0", "Tr", "Tm"})
+    );
+    return valid;
 }
 
 

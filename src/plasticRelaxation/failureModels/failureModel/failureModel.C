@@ -1,4 +1,5 @@
 #include "failureModel.H"
+#include "inputDefaults.H"
 
 namespace Foam
 {
@@ -17,8 +18,8 @@ Foam::failureModel::failureModel
 :
     phaseName_(phaseName),
     sigmaSpall_(0),
-    pCavitation_(dict.getOrDefault<scalar>("cavitationPressure", 0)),
-    spallTime_(dict.getOrDefault<scalar>("spallTime", 0))
+    pCavitation_(readOptional(dict, "cavitationPressure", 0)),
+    spallTime_(readOptional(dict, "spallTime", 0))
 {
     if (dict.found("sigmaSpall"))
     {
@@ -49,7 +50,33 @@ Foam::failureModel::failureModel
 }
 
 
+Foam::wordList Foam::failureModel::keywords() const
+{
+    return {"type", "sigmaSpall", "cavitationPressure", "spallTime"};
+}
+
+
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::failureModel::readOptional
+(
+    const dictionary& dict,
+    const word& name,
+    const scalar deflt
+) const
+{
+    // A default is noted where a failure model acts (not type none)
+    if (dict.getOrDefault<word>("type", "none") == "none")
+    {
+        return dict.getOrDefault<scalar>(name, deflt);
+    }
+    return
+        inputDefaults::get<scalar>
+        (
+            dict, name, deflt, "Phase " + phaseName_ + ", failure"
+        );
+}
+
 
 Foam::scalar Foam::failureModel::read
 (

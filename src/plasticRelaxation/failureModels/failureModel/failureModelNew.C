@@ -1,4 +1,5 @@
 #include "failureModel.H"
+#include "keywordCheck.H"
 
 Foam::autoPtr<Foam::failureModel> Foam::failureModel::New
 (
@@ -24,7 +25,17 @@ Foam::autoPtr<Foam::failureModel> Foam::failureModel::New
             << exit(FatalIOError);
     }
 
-    return cstrIter()(phaseName, dict, phaseDict);
+    autoPtr<failureModel> model(cstrIter()(phaseName, dict, phaseDict));
+
+    // Each model lists the entries it reads
+    if (dictPtr)
+    {
+        checkKeywords
+        (
+            dict, model->keywords(), "Phase " + phaseName + ", failure"
+        );
+    }
+    return model;
 }
 
 

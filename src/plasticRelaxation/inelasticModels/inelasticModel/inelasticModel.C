@@ -19,4 +19,16 @@ Foam::inelasticModel::inelasticModel(const hyperelasticPhase& law)
 {}
 
 
+Foam::wordList Foam::inelasticModel::keywords() const
+{
+    return {"type"};
+}
+
+
+Foam::wordList Foam::inelasticModel::phaseKeywords() const
+{
+    return {"inelastic"};
+}
+
+
 // ************************************************************************* //

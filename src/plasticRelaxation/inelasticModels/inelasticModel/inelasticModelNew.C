@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "inelasticModel.H"
+#include "keywordCheck.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
@@ -28,7 +29,17 @@ Foam::autoPtr<Foam::inelasticModel> Foam::inelasticModel::New
             << dictionaryConstructorTablePtr_->sortedToc()
             << exit(FatalIOError);
     }
-    return cstrIter()(law, phaseDict);
+    autoPtr<inelasticModel> model(cstrIter()(law, phaseDict));
+
+    // Each model lists the entries of its sub-dictionary
+    if (dictPtr)
+    {
+        checkKeywords
+        (
+            *dictPtr, model->keywords(), "Phase " + law.name() + ", inelastic"
+        );
+    }
+    return model;
 }
 
 

@@ -81,6 +81,18 @@ Foam::inelasticModels::plasticityAndFailure::plasticityAndFailure
 }
 
 
+Foam::wordList
+Foam::inelasticModels::plasticityAndFailure::phaseKeywords() const
+{
+    wordList valid(inelasticModel::phaseKeywords());
+    if (law_.solid())
+    {
+        valid.append(wordList({"plasticity", "failure"}));
+    }
+    return valid;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::carriedVariableList

@@ -45,11 +45,11 @@ Foam::yieldStresses::JohnsonCook::JohnsonCook
     A_(readNonNegative(dict, "A")),
     B_(readNonNegative(dict, "B")),
     n_(readPositive(dict, "n")),
-    C_(dict.found("C") ? readNonNegative(dict, "C") : 0),
+    C_(readNonNegative(dict, "C", 0)),
     m_(readPositive(dict, "m")),
     Tr_(readNonNegative(dict, "Tr")),
     Tm_(read(dict, "Tm")),
-    epsDot0_(dict.found("epsDot0") ? readPositive(dict, "epsDot0") : 1),
+    epsDot0_(readPositive(dict, "epsDot0", 1)),
     rDeltaT_(0),
     rEpsDot0_(1/epsDot0_),
     lastT_(Tr_),
@@ -57,6 +57,12 @@ Foam::yieldStresses::JohnsonCook::JohnsonCook
 {
     check(dict);
     rDeltaT_ = 1/(Tm_ - Tr_);
+}
+
+
+Foam::wordList Foam::yieldStresses::JohnsonCook::keywords() const
+{
+    return {"type", "A", "B", "n", "C", "m", "Tr", "Tm", "epsDot0"};
 }
 
 

@@ -24,6 +24,12 @@ Foam::yieldStresses::constant::constant
 {}
 
 
+Foam::wordList Foam::yieldStresses::constant::keywords() const
+{
+    return {"type", "sigmaY"};
+}
+
+
 Foam::yieldStresses::constant::constant
 (
     const word& phaseName,

@@ -25,6 +25,12 @@ Foam::yieldStresses::linear::linear
 {}
 
 
+Foam::wordList Foam::yieldStresses::linear::keywords() const
+{
+    return {"type", "sigmaY0", "H"};
+}
+
+
 Foam::yieldStresses::linear::linear
 (
     const word& phaseName,

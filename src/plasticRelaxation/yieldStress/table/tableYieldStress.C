@@ -101,6 +101,12 @@ Foam::yieldStresses::table::table
 }
 
 
+Foam::wordList Foam::yieldStresses::table::keywords() const
+{
+    return {"type", "values"};
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::scalar Foam::yieldStresses::table::sigmaY

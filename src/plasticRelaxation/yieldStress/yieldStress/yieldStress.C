@@ -1,4 +1,5 @@
 #include "yieldStress.H"
+#include "inputDefaults.H"
 
 namespace Foam
 {
@@ -13,6 +14,12 @@ Foam::yieldStress::yieldStress(const word& phaseName)
 :
     phaseName_(phaseName)
 {}
+
+
+Foam::wordList Foam::yieldStress::keywords() const
+{
+    return {"type"};
+}
 
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
@@ -66,3 +73,48 @@ Foam::scalar Foam::yieldStress::readNonNegative
     }
     return value;
 }
+
+
+Foam::scalar Foam::yieldStress::readPositive
+(
+    const dictionary& dict,
+    const word& name,
+    const scalar deflt
+) const
+{
+    if (!dict.found(name))
+    {
+        inputDefaults::note
+        (
+            "Phase " + phaseName_ + ", plasticity yieldStress",
+            name,
+            Foam::name(deflt)
+        );
+        return deflt;
+    }
+    return readPositive(dict, name);
+}
+
+
+Foam::scalar Foam::yieldStress::readNonNegative
+(
+    const dictionary& dict,
+    const word& name,
+    const scalar deflt
+) const
+{
+    if (!dict.found(name))
+    {
+        inputDefaults::note
+        (
+            "Phase " + phaseName_ + ", plasticity yieldStress",
+            name,
+            Foam::name(deflt)
+        );
+        return deflt;
+    }
+    return readNonNegative(dict, name);
+}
+
+
+// ************************************************************************* //

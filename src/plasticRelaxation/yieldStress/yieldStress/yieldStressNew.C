@@ -1,4 +1,5 @@
 #include "yieldStress.H"
+#include "keywordCheck.H"
 
 Foam::autoPtr<Foam::yieldStress> Foam::yieldStress::New
 (
@@ -29,5 +30,14 @@ Foam::autoPtr<Foam::yieldStress> Foam::yieldStress::New
             << exit(FatalIOError);
     }
 
-    return cstrIter()(phaseName, dict);
+    autoPtr<yieldStress> model(cstrIter()(phaseName, dict));
+
+    // Each model lists the entries it reads
+    checkKeywords
+    (
+        dict,
+        model->keywords(),
+        "Phase " + phaseName + ", plasticity yieldStress"
+    );
+    return model;
 }

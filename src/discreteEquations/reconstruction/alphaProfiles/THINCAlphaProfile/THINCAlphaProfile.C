@@ -1,6 +1,8 @@
 #include "THINCAlphaProfile.H"
+#include "inputDefaults.H"
 #include "foamEigen.H"
 #include "readOption.H"
+#include "keywordCheck.H"
 #include "addToRunTimeSelectionTable.H"
 
 using Foam::foamEigen::toEigen;
@@ -36,10 +38,27 @@ Foam::THINCAlphaProfile::THINCAlphaProfile
     thinc_(readBeta(dict)),
     profiles_(phases.size())
 {
+    if (dict.isDict("THINCCoeffs"))
+    {
+        checkKeywords
+        (
+            dict.subDict("THINCCoeffs"),
+            {"range", "beta"},
+            "discreteEquations THINCCoeffs"
+        );
+    }
     for (auto& profiles : profiles_)
     {
         profiles.resize(mesh_.nCells());
     }
+}
+
+
+Foam::wordList Foam::THINCAlphaProfile::keywords() const
+{
+    wordList valid(alphaProfile::keywords());
+    valid.append("THINCCoeffs");
+    return valid;
 }
 
 
@@ -73,7 +92,13 @@ bool Foam::THINCAlphaProfile::readRange(const dictionary& dict)
 Foam::scalar Foam::THINCAlphaProfile::readBeta(const dictionary& dict)
 {
     const scalar beta =
-        dict.optionalSubDict("THINCCoeffs").getOrDefault<scalar>("beta", 2.5);
+        inputDefaults::get<scalar>
+        (
+            dict.optionalSubDict("THINCCoeffs"),
+            "beta",
+            2.5,
+            "discreteEquations THINCCoeffs"
+        );
     if (!(beta >= 0.5 && beta <= 10))
     {
         FatalIOErrorInFunction(dict)

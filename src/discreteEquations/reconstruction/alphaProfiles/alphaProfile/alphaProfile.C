@@ -1,4 +1,5 @@
 #include "alphaProfile.H"
+#include "inputDefaults.H"
 
 namespace Foam
 {
@@ -21,11 +22,21 @@ Foam::alphaProfile::alphaProfile
 {}
 
 
+Foam::wordList Foam::alphaProfile::keywords() const
+{
+    return {"alphaReconstruction", "alphaCompression"};
+}
+
+
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
 Foam::scalar Foam::alphaProfile::readCompression(const dictionary& dict)
 {
-    const scalar C = dict.getOrDefault<scalar>("alphaCompression", 1);
+    const scalar C =
+        inputDefaults::get<scalar>
+        (
+            dict, "alphaCompression", 1, "discreteEquations"
+        );
     if (!(C >= 1 && C <= 4))
     {
         FatalIOErrorInFunction(dict)

@@ -1,4 +1,5 @@
 #include "alphaProfile.H"
+#include "inputDefaults.H"
 #include <algorithm>
 #include <cctype>
 
@@ -16,6 +17,13 @@ Foam::autoPtr<Foam::alphaProfile> Foam::alphaProfile::New
     // unknown word reported with the entry and the valid words
     const entry* eptr = dict.findEntry("alphaReconstruction", keyType::LITERAL);
     const word profileType(eptr ? eptr->get<word>() : word("linear"));
+    if (!eptr)
+    {
+        inputDefaults::note
+        (
+            "discreteEquations", "alphaReconstruction", profileType
+        );
+    }
 
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(profileType);
 
