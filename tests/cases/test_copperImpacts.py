@@ -108,23 +108,17 @@ def main():
         % (drift, K0, t[-1]*1e6, d["plasticWork"][-1]))
 
     # Copper entropy function relative to the initial state, at every write;
-    # the stiffened gas of the case's phaseProperties, the state of its 0.orig
+    # the stiffened gas of the case's material file, the bar's initial
+    # state of its impactDict
     def entry(dict_file, key):
         return foamcase.foam_dictionary(tb, dict_file, key)
 
-    def uniform(field):
-        value = entry(os.path.join("0.orig", field), "internalField").split()
-        if len(value) != 2 or value[0] != "uniform":
-            checks.fail("taylorBar_isentrope", "0.orig/%s is not uniform: %s"
-                        % (field, " ".join(value)))
-            checks.exit()
-        return float(value[1])
-
-    GAMMA = float(entry("constant/phaseProperties",
-                        "copper/equationOfState/gamma"))
-    PINF = float(entry("constant/phaseProperties",
-                       "copper/equationOfState/pInf"))
-    RHO0, P0 = uniform("rho.copper"), uniform("p")
+    GAMMA = float(entry("constant/materials/taylorCopper",
+                        "equationOfState/gamma"))
+    PINF = float(entry("constant/materials/taylorCopper",
+                       "equationOfState/pInf"))
+    RHO0 = float(entry("system/impactDict", "bodies/bar/rho"))
+    P0 = float(entry("system/impactDict", "ambient/p"))
     s0 = (P0 + PINF)/RHO0**GAMMA
     worstS, worstAt = 1.0, ""
     for tw, n in foamcase.time_dirs(tb):

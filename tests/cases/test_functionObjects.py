@@ -116,7 +116,7 @@ functions
     {
         type            wallForce;
         libs            (impactFoamFunctionObjects);
-        patches         (wall end side axis);
+        patches         (xMin xMax yMax axis);
     }
     rod
     {
@@ -251,9 +251,7 @@ def taylor_case(name, parallel=False):
     case = fc.copy_tutorial("taylorBar", name)
     prepare(case, FUNCTIONS_A)
     fc.set_entry(case, "system/controlDict", "writeInterval", "1e-6")
-    fc.run(case, ["blockMesh"])
-    fc.run(case, "rm -rf 0 && cp -r 0.orig 0", log="log.copy")
-    fc.run(case, ["setFields"])
+    fc.run(case, ["impactSetup"])
     if parallel:
         fc.write_decompose_dict(case, 2)
         fc.run(case, ["decomposePar", "-force"])
@@ -335,7 +333,7 @@ def check_wall_force(case, name="fo_wallForce"):
     force = read_dat(case, "wallForce")
     first = row_at(force, times[1][0])
     last = row_at(force, times[-1][0])
-    patches = ["wall", "end", "side", "axis"]
+    patches = ["xMin", "xMax", "yMax", "axis"]
     impulse = sum(last[p + ".Ix"] - first[p + ".Ix"] for p in patches)
     err = abs(impulse - dPx) / barP
     checks.check(name + "_impulse", err <= 1e-11,
@@ -345,7 +343,7 @@ def check_wall_force(case, name="fo_wallForce"):
                  "the bar's momentum (bound 1e-11); the wall's impulse "
                  "since the start %.6g N s"
                  % (times[1][0], times[-1][0], impulse, dPx, barP, err,
-                    last["wall.Ix"]))
+                    last["xMin.Ix"]))
 
     t = column(force, "Time")
     worst = 0.0
@@ -392,9 +390,7 @@ def check_unchanged(case):
     plain = fc.copy_tutorial("taylorBar", "functionObjects_none")
     prepare(plain, "")
     fc.set_entry(plain, "system/controlDict", "writeInterval", "1e-6")
-    fc.run(plain, ["blockMesh"])
-    fc.run(plain, "rm -rf 0 && cp -r 0.orig 0", log="log.copy")
-    fc.run(plain, ["setFields"])
+    fc.run(plain, ["impactSetup"])
     fc.run(plain, ["impactFoam", "-endTime", str(END_A)])
     compared = differ = 0
     for t, name in fc.time_dirs(plain):
@@ -427,7 +423,7 @@ def check_parallel(serial, serialLast, barP):
     xp = row_at(read_dat(case, "rod"), t)
     dE = abs(ep["total"] / es["total"] - 1)
     dI = max(abs(fp[p + ".Ix"] - serialLast[p + ".Ix"])
-             for p in ("wall", "end", "side", "axis")) / barP
+             for p in ("xMin", "xMax", "yMax", "axis")) / barP
     dX = max(abs(xp[q] - xs[q]) for q in ("length", "maxRadius",
                                           "faceRadius", "zMin",
                                           "penetration"))
@@ -505,17 +501,10 @@ def check_unpaid():
     case = fc.copy_tutorial("taylorBar", "functionObjects_unpaid")
     prepare(case, FUNCTIONS_UNPAID)
     fc.set_entry(case, "system/controlDict", "writeInterval", "1e-6")
-    fc.set_entry(case, "constant/phaseProperties", "dustDensityRatio", "0")
-    path = os.path.join(case, "system", "setFieldsDict")
-    with open(path) as f:
-        text = f.read()
-    if "U (-227 0 0)" not in text:
-        raise fc.FoamError("no bar speed in " + path)
-    with open(path, "w") as f:
-        f.write(text.replace("U (-227 0 0)", "U (-2000 0 0)"))
-    fc.run(case, ["blockMesh"])
-    fc.run(case, "rm -rf 0 && cp -r 0.orig 0", log="log.copy")
-    fc.run(case, ["setFields"])
+    fc.impact_phase_properties(case, {"dustDensityRatio": "0"})
+    with open(os.path.join(case, "system", "impact"), "w") as f:
+        f.write("U (-2000 0 0);\n")
+    fc.run(case, ["impactSetup"])
     fc.run(case, ["impactFoam", "-endTime", str(END_C)])
     energy = read_dat(case, "energy")
     totals = log_totals(case)
@@ -561,9 +550,7 @@ functions
     }
 }
 """ % (kind, line))
-        fc.run(case, ["blockMesh"])
-        fc.run(case, "rm -rf 0 && cp -r 0.orig 0", log="log.copy")
-        fc.run(case, ["setFields"])
+        fc.run(case, ["impactSetup"])
         log = fc.run(case, ["impactFoam", "-endTime", "1e-8"], check=False)
         with open(log) as f:
             text = f.read()
@@ -653,7 +640,7 @@ def check_surface_velocity():
 
 
 def main():
-    missing = fc.require_apps("impactFoam", "blockMesh", "setFields",
+    missing = fc.require_apps("impactFoam", "impactSetup", "setFields",
                               "rodProfile")
     if missing:
         checks.fail("fo_run", "missing " + str(missing))

@@ -64,7 +64,7 @@ def main():
         checks.exit()
 
     wedge = foamcase.copy_tutorial("taylorBar", "gradientCheck_wedge")
-    foamcase.run(wedge, ["blockMesh"])
+    foamcase.run(wedge, ["impactSetup"])
 
     box = os.path.join(foamcase.RUN_DIR, "gradientCheck_box3D")
     foamcase.copy_tutorial("taylorBar", "gradientCheck_box3D")

@@ -73,16 +73,7 @@ def run(tutorial, v):
     name = "R1_%s_v%d" % (tutorial, v)
     case = fc.copy_tutorial(tutorial, name)
     fc.set_entry(case, "system/controlDict", "writeFormat", "ascii")
-    if tutorial == "taylorBar":
-        path = os.path.join(case, "system", "setFieldsDict")
-        text = open(path).read()
-        new, n = re.subn(r"U \(-227 0 0\)", "U (-%d 0 0)" % v, text)
-        if n != 1:
-            raise fc.FoamError("taylorBar: the speed entry U (-227 0 0) is "
-                               "not in %s" % path)
-        open(path, "w").write(new)
-        cmd = "./Allrun -h %g -end %g" % (H, T_END)
-    elif tutorial == "hypervelocityImpact":
+    if tutorial == "hypervelocityImpact":
         cmd = "./Allrun -h %g -end %g -v %d" % (HYPER_H, T_END, v)
     elif tutorial == "obliqueRodImpact3D":
         cmd = "./Allrun -h %g -end %g -v %d -np %d" % (OBLIQUE_H, T_END, v,

@@ -59,8 +59,8 @@ def run(tag, maxCo, relax, end=END, sigmaY=None):
                        "discreteEquations/predictorRelaxation",
                        "on" if relax else "off")
     if sigmaY is not None:
-        foamcase.set_entry(case, "constant/phaseProperties",
-                           "copper/plasticity/sigmaY0", sigmaY)
+        foamcase.set_entry(case, "constant/materials/taylorCopper",
+                           "plasticity/sigmaY0", sigmaY)
     foamcase.run(case, ["./Allrun", "-h", str(H), "-end", str(end)],
                  log="log.Allrun", timeout=900)
     return case

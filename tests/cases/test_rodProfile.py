@@ -67,14 +67,13 @@ def measure(case, m, outline):
 
 
 def main():
-    missing = fc.require_apps("blockMesh", "rodProfile")
+    missing = fc.require_apps("impactSetup", "rodProfile")
     if missing:
         checks.fail("rodProfile_faceRadius_cone", "missing " + str(missing))
         checks.exit()
     case = fc.copy_tutorial("taylorBar", "rodProfile_faceRadius")
     fc.set_entry(case, "system/controlDict", "writeFormat", "ascii")
-    fc.run(case, ["blockMesh"])
-    fc.run(case, "rm -rf 0 && cp -r 0.orig 0", log="log.copy")
+    fc.run(case, ["impactSetup"])
     m = mg.read_polymesh(case)
     h = m.C[:, 0].min() * 2
     if abs(h - H) > 1e-9:

@@ -240,6 +240,20 @@ def set_entry(case, dict_file, key, value, use_foam_dictionary=False):
         f.write(new)
 
 
+def impact_phase_properties(case, entries):
+    """Add entries (a dict of name: value) to the phaseProperties
+    dictionary of system/impactDict (impactSetup copies them into
+    constant/phaseProperties), creating it at the end of the file"""
+    path = os.path.join(case, "system", "impactDict")
+    with open(path) as f:
+        text = f.read()
+    if re.search(r"^phaseProperties\b", text, re.M):
+        raise FoamError("%s has a phaseProperties entry already" % path)
+    body = "".join("    %s %s;\n" % (k, v) for k, v in entries.items())
+    with open(path, "w") as f:
+        f.write(text.rstrip("\n") + "\n\nphaseProperties\n{\n%s}\n" % body)
+
+
 def get_entry(case, dict_file, key):
     """Value (string) of the first 'key value;' line in a dictionary file,
     or None."""

@@ -75,30 +75,20 @@ def copy_case(tutorial, dest):
                             os.path.dirname(dest))
 
 
-def set_velocity(case, speed):
-    """Scale the rod velocities of setFieldsDict to +/- speed."""
-    path = os.path.join(case, "system", "setFieldsDict")
-    with open(path) as f:
-        text = f.read()
-    text = text.replace("(-227 0 0)", "(-%g 0 0)" % speed)
-    text = text.replace("(227 0 0)", "(%g 0 0)" % speed)
-    with open(path, "w") as f:
-        f.write(text)
-
-
 def finished_run(case, h_mm, end=None):
     """Wall time (s, from log.impactFoam's ExecutionTime; 0 when absent) of
     a run of case at cell size h_mm that reached its end time (80 us
     unless given), else None: --reuse takes it instead of running again."""
     try:
-        with open(os.path.join(case, "system", "meshSize")) as f:
-            h = [ln.split()[1].rstrip(";") for ln in f
-                 if ln.split()[:1] == ["h"]]
+        # impactSetup logs "Cell size <m> m (option -cellSize)"
+        with open(os.path.join(case, "log.impactSetup")) as f:
+            h = [1e3 * float(ln.split()[2]) for ln in f
+                 if ln.startswith("Cell size ")]
         tab = read_table(case)
     except (OSError, IndexError, KeyError, ValueError):
         return None
     # run_case hands Allrun the cell size as "%g" (0.133333 for 2/15 mm)
-    if not h or abs(float(h[0]) - float("%g" % h_mm)) > 1e-9 \
+    if not h or abs(h[0] - float("%g" % h_mm)) > 1e-9 \
             or tab["t"][-1] < (end or 80e-6) * (1 - 1e-6):
         return None
     wall = 0.0
@@ -113,10 +103,11 @@ def finished_run(case, h_mm, end=None):
 
 
 def prepare_run(tutorial, case, h_mm, np_, reuse, label, end=None,
-                modify=None):
-    """Run tutorial at cell size h_mm in case (a fresh copy, given to
-    modify(case) first when given) and return the wall time; with reuse, a
-    finished run already there is taken as is."""
+                modify=None, speed=None):
+    """Run tutorial at cell size h_mm (and speed, Allrun -v, when given) in
+    case (a fresh copy, given to modify(case) first when given) and return
+    the wall time; with reuse, a finished run already there is taken as
+    is."""
     if reuse:
         wall = finished_run(case, h_mm, end)
         if wall is not None:
@@ -127,13 +118,15 @@ def prepare_run(tutorial, case, h_mm, np_, reuse, label, end=None,
     if modify:
         modify(case)
     progress("%s h = %g mm: running in %s" % (label, h_mm, case))
-    return run_case(case, h_mm, np_, end=end, label=label)
+    return run_case(case, h_mm, np_, end=end, label=label, speed=speed)
 
 
-def run_case(case, h_mm, np_=1, end=None, label=""):
-    """./Allrun -h h [-np N] [-end t] in case, with a progress line from the
-    solver log every 20 s. Returns the wall time in s."""
+def run_case(case, h_mm, np_=1, end=None, label="", speed=None):
+    """./Allrun -h h [-np N] [-end t] [-v speed] in case, with a progress
+    line from the solver log every 20 s. Returns the wall time in s."""
     cmd = ["./Allrun", "-h", "%g" % h_mm]
+    if speed is not None:
+        cmd += ["-v", "%g" % speed]
     if np_ > 1:
         cmd += ["-np", str(np_)]
     if end:
