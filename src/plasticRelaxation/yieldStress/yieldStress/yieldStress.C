@@ -75,6 +75,27 @@ Foam::scalar Foam::yieldStress::readNonNegative
 }
 
 
+bool Foam::yieldStress::defaulted
+(
+    const dictionary& dict,
+    const word& name,
+    const scalar deflt
+) const
+{
+    if (dict.found(name))
+    {
+        return false;
+    }
+    inputDefaults::note
+    (
+        "Phase " + phaseName_ + ", plasticity yieldStress",
+        name,
+        Foam::name(deflt)
+    );
+    return true;
+}
+
+
 Foam::scalar Foam::yieldStress::readPositive
 (
     const dictionary& dict,
@@ -82,17 +103,7 @@ Foam::scalar Foam::yieldStress::readPositive
     const scalar deflt
 ) const
 {
-    if (!dict.found(name))
-    {
-        inputDefaults::note
-        (
-            "Phase " + phaseName_ + ", plasticity yieldStress",
-            name,
-            Foam::name(deflt)
-        );
-        return deflt;
-    }
-    return readPositive(dict, name);
+    return defaulted(dict, name, deflt) ? deflt : readPositive(dict, name);
 }
 
 
@@ -103,17 +114,7 @@ Foam::scalar Foam::yieldStress::readNonNegative
     const scalar deflt
 ) const
 {
-    if (!dict.found(name))
-    {
-        inputDefaults::note
-        (
-            "Phase " + phaseName_ + ", plasticity yieldStress",
-            name,
-            Foam::name(deflt)
-        );
-        return deflt;
-    }
-    return readNonNegative(dict, name);
+    return defaulted(dict, name, deflt) ? deflt : readNonNegative(dict, name);
 }
 
 
