@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 """The crater of the hypervelocityImpact tutorial, at every write time.
 
-Reads alpha.aluminium of each time directory (ascii) on the structured
-mesh of system/blockMeshDict (nx x nr cells of side h from system/meshSize,
-x in [-20, 12] mm, the target's face at x = 0) and measures, below the
+Reads alpha.aluminium of each time directory (ascii) and the cell centres
+0/C (postProcess -func writeCellCentres) of the wedge mesh (x in
+[-20, 12] mm, the target's face at x = 0), and measures, below the
 target's original face:
   depth     along the row of cells next to the axis, from x = 0 down to
             where alpha.aluminium rises through 1/2 (linear between cell
@@ -51,14 +51,28 @@ def crossing(values, positions, start):
     return positions[-1]
 
 
+def centres(path):
+    """The cell centres of 0/C [mm]"""
+    text = open(path).read()
+    m = re.search(r"internalField\s+nonuniform\s+List<vector>\s*(\d+)\s*\(",
+                  text)
+    body = text[m.end():]
+    values = re.findall(r"\(([^()]*)\)", body[:body.index("\n)")])
+    return 1e3 * np.array([v.split() for v in values], float)
+
+
 def main():
-    size = os.path.join(HERE, "system", "meshSize")
-    h, nx, nr = entry(size, "h"), int(entry(size, "nx")), int(entry(size, "nr"))
-    hx = 32.0 / nx
-    hr = 24.0 / nr
-    x = X_MIN + (np.arange(nx) + 0.5) * hx
-    r = (np.arange(nr) + 0.5) * hr
-    below = np.where(x < 0)[0][::-1]          # from the face downwards
+    C = centres(os.path.join(HERE, "0", "C"))
+    n = len(C)
+    x, r = C[:, 0], np.hypot(C[:, 1], C[:, 2])
+    # The row next to the axis below the face, downwards; the first row
+    # below the face, outwards
+    axis = np.isclose(r, r.min(), rtol=1e-6, atol=1e-9)
+    below = np.where(axis & (x < 0))[0]
+    below = below[np.argsort(-x[below])]
+    top = x[x < 0].max()
+    row = np.where(np.isclose(x, top, rtol=0, atol=1e-9))[0]
+    row = row[np.argsort(r[row])]
     times = sorted((d for d in os.listdir(HERE)
                     if re.match(r"^[0-9.eE+-]+$", d) and float(d) > 0),
                    key=float)
@@ -67,9 +81,9 @@ def main():
         path = os.path.join(HERE, t, "alpha.aluminium")
         if not os.path.exists(path):
             continue
-        a = field(path, nx * nr).reshape(nr, nx)
-        depth = max(0.0, -crossing(a[0, below], x[below], 0.0))
-        radius = crossing(a[:, below[0]], r, 0.0)
+        a = field(path, n)
+        depth = max(0.0, -crossing(a[below], x[below], 0.0))
+        radius = crossing(a[row], r[row], 0.0)
         rows.append((float(t), depth, 2 * radius))
     rows = np.array(rows)
     np.savetxt(os.path.join(HERE, "crater.dat"), rows, fmt="%.6g",
