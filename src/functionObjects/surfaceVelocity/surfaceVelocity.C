@@ -24,13 +24,28 @@ Foam::functionObjects::surfaceVelocity::surfaceVelocity
     const dictionary& dict
 )
 :
+    surfaceVelocity(name, runTime, dict, true)
+{}
+
+
+Foam::functionObjects::surfaceVelocity::surfaceVelocity
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict,
+    const bool writeStart
+)
+:
     impactTimeHistory(name, runTime, dict),
     phase_(-1),
     point_(Zero),
     direction_(1, 0, 0)
 {
     surfaceVelocity::read(dict);
-    start();
+    if (writeStart)
+    {
+        start();
+    }
 }
 
 
@@ -83,7 +98,8 @@ Foam::wordList Foam::functionObjects::surfaceVelocity::columns() const
 }
 
 
-void Foam::functionObjects::surfaceVelocity::values(DynamicList<scalar>& row)
+Foam::functionObjects::surfaceVelocity::lineSurface
+Foam::functionObjects::surfaceVelocity::surfaceOnLine() const
 {
     const scalarField& alpha = phases().alpha(phase_).primitiveField();
     const vectorField& U = phases().U().primitiveField();
@@ -104,6 +120,7 @@ void Foam::functionObjects::surfaceVelocity::values(DynamicList<scalar>& row)
     }
     Pstream::gatherList(lines);
 
+    // position, Ux, Uy, Uz, length
     List<scalar> result(5, Zero);
     if (Pstream::master())
     {
@@ -118,6 +135,21 @@ void Foam::functionObjects::surfaceVelocity::values(DynamicList<scalar>& row)
         std::sort(line.begin(), line.end());
 
         const label n = line.size();
+
+        // The phase's length on the line: alpha times each cell's share
+        // of the line, half-way to its neighbours' centres
+        for (label i = 0; i < n; ++i)
+        {
+            const scalar sLow = i > 0 ? line[i - 1][0] : line[i][0];
+            const scalar sHigh = i + 1 < n ? line[i + 1][0] : line[i][0];
+            scalar ds = 0.5*(sHigh - sLow);
+            if (n > 1 && (i == 0 || i + 1 == n))
+            {
+                ds *= 2;
+            }
+            result[4] += line[i][1]*ds;
+        }
+
         for (label i = n - 1; i >= 0; --i)
         {
             if (line[i][1] < 0.5)
@@ -134,18 +166,32 @@ void Foam::functionObjects::surfaceVelocity::values(DynamicList<scalar>& row)
                 w = (line[i][1] - 0.5)/(line[i][1] - line[j][1]);
             }
             result[0] = line[i][0] + w*(line[j][0] - line[i][0]);
-            const vector Ui(line[i][2], line[i][3], line[i][4]);
-            const vector Uj(line[j][2], line[j][3], line[j][4]);
-            const vector Us(Ui + w*(Uj - Ui));
-            result[1] = Us & direction_;
-            result[2] = Us.x();
-            result[3] = Us.y();
-            result[4] = Us.z();
+            for (label k = 0; k < 3; ++k)
+            {
+                result[1 + k] =
+                    line[i][2 + k] + w*(line[j][2 + k] - line[i][2 + k]);
+            }
             break;
         }
     }
     Pstream::scatter(result);
-    row.append(result);
+
+    lineSurface surface;
+    surface.position = result[0];
+    surface.U = vector(result[1], result[2], result[3]);
+    surface.length = result[4];
+    return surface;
+}
+
+
+void Foam::functionObjects::surfaceVelocity::values(DynamicList<scalar>& row)
+{
+    const lineSurface surface(surfaceOnLine());
+    row.append(surface.position);
+    row.append(surface.U & direction_);
+    row.append(surface.U.x());
+    row.append(surface.U.y());
+    row.append(surface.U.z());
 }
 
 
