@@ -22,6 +22,11 @@ Foam::impactBody::impactBody
     phase(),
     material(),
     U(Zero),
+    radial(false),
+    radialCentre(Zero),
+    radialU(0),
+    radialRadius(1),
+    radialExponent(0),
     p(0),
     rho(0),
     T(-1)
@@ -156,6 +161,22 @@ Foam::scalar Foam::impactBody::exactVolume
         return shape_->volume(geometry, depth);
     }
     return -1;
+}
+
+
+Foam::vector Foam::impactBody::velocity(const point& x) const
+{
+    if (!radial)
+    {
+        return U;
+    }
+    const vector d(x - radialCentre);
+    const scalar r = mag(d);
+    if (r < VSMALL)
+    {
+        return Zero;
+    }
+    return radialU*Foam::pow(r/radialRadius, radialExponent)*d/r;
 }
 
 

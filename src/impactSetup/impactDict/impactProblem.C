@@ -172,7 +172,7 @@ void Foam::impactProblem::readBodies()
     const wordList bodyKeys
     ({
         "material", "phase", "U", "T", "rho", "p", "angle", "rotationAxis",
-        "gap", "cuts"
+        "gap", "cuts", "radialVelocity"
     });
 
     label n = 0;
@@ -214,6 +214,10 @@ void Foam::impactProblem::readBodies()
         {
             b.U = b.rotation() & b.U;
         }
+        if (d.found("radialVelocity", keyType::LITERAL))
+        {
+            readRadialVelocity(d, b);
+        }
         b.p = d.getOrDefault<scalar>("p", ambient_.p);
 
         // The bodies this one cuts: earlier ones
@@ -242,6 +246,46 @@ void Foam::impactProblem::readBodies()
             }
         }
         ++i;
+    }
+}
+
+
+void Foam::impactProblem::readRadialVelocity
+(
+    const dictionary& d,
+    impactBody& b
+) const
+{
+    const string owner(b.owner() + ", radialVelocity");
+    if (d.found("U", keyType::LITERAL))
+    {
+        FatalIOErrorInFunction(d)
+            << b.owner().c_str() << ": give either U or radialVelocity,"
+            << " not both" << exit(FatalIOError);
+    }
+    if (d.found("gap", keyType::LITERAL))
+    {
+        FatalIOErrorInFunction(d)
+            << b.owner().c_str() << ": a gap moves a body along its"
+            << " velocity U, which a radialVelocity does not have"
+            << exit(FatalIOError);
+    }
+    const dictionary& rd = subDict(d, "radialVelocity", b.owner());
+    checkKeywords(rd, {"centre", "U", "radius", "exponent"}, owner);
+    for (const word& key : {"centre", "U", "radius"})
+    {
+        require(rd, key, owner);
+    }
+    b.radial = true;
+    b.radialCentre = rd.get<point>("centre");
+    b.radialU = rd.get<scalar>("U");
+    b.radialRadius = rd.get<scalar>("radius");
+    b.radialExponent = rd.getOrDefault<scalar>("exponent", 0);
+    if (!(b.radialRadius > 0))
+    {
+        FatalIOErrorInFunction(rd)
+            << owner.c_str() << ": radius " << b.radialRadius
+            << " must be positive" << exit(FatalIOError);
     }
 }
 

@@ -224,6 +224,7 @@ void Foam::impactProblem::setFields(const fvMesh& mesh)
     }
     vectorField U(nCells, Zero);
     scalarField p(nCells, ambient_.p);
+    const vectorField& C = mesh.C().primitiveField();
     forAll(U, celli)
     {
         vector momentum(alphaAmbient[celli]*ambient_.rho*ambient_.U);
@@ -232,7 +233,7 @@ void Foam::impactProblem::setFields(const fvMesh& mesh)
         forAll(bodies_, i)
         {
             const impactBody& b = bodies_[i];
-            momentum += alpha[i][celli]*b.rho*b.U;
+            momentum += alpha[i][celli]*b.rho*b.velocity(C[celli]);
             mass += alpha[i][celli]*b.rho;
             pa += alpha[i][celli]*b.p;
         }
@@ -288,8 +289,17 @@ void Foam::impactProblem::setFields(const fvMesh& mesh)
         {
             Info<< " (no closed form for the exact volume)";
         }
-        Info<< nl << "    mass " << Vmesh*b.rho << ", U " << b.U
-            << ", rho " << b.rho << ", p " << b.p;
+        Info<< nl << "    mass " << Vmesh*b.rho << ", U ";
+        if (b.radial)
+        {
+            Info<< b.radialU << " (r/" << b.radialRadius << ")^"
+                << b.radialExponent << " along r from " << b.radialCentre;
+        }
+        else
+        {
+            Info<< b.U;
+        }
+        Info<< ", rho " << b.rho << ", p " << b.p;
         if (b.T > 0)
         {
             Info<< ", T " << b.T;
