@@ -24,7 +24,14 @@ Checks
                     shape, missing dimension, overlapping bodies, body wholly
                     and partly outside, unknown material (with the list),
                     two materials in one phase, gap to an unknown body,
-                    cuts naming no earlier body
+                    cuts naming no earlier body, radialVelocity with U,
+                    a misspelled or bad radialVelocity entry
+  impactSetup_radialVelocity   a sphere shell with radialVelocity
+                    { U -600; radius 8e-3; exponent -2; } in still air:
+                    in every cell the shell fills, U equals
+                    -600 (8 mm/r)^2 along r at the cell centre (1e-9:
+                    the files hold 10 digits),
+                    and U is 0 where only air is
   impactSetup_cuts  a later box declaring cuts (earlier) takes the
                     earlier's volume where they overlap: the earlier's
                     volume is its own less the common part, the sum of the
@@ -375,6 +382,15 @@ BAD = [
     ("cutsUnknown", ("material steel4340; }", "material steel4340; "
                      "cuts (rods); }"),
      ["Body target", "cuts names rods", "not an earlier body"]),
+    ("radialAndU", ("T 293; }\n    target", "T 293; radialVelocity { "
+                    "centre (0 0 0); U -100; radius 1e-3; } }\n    target"),
+     ["Body rod: give either U or radialVelocity, not both"]),
+    ("radialKeyword", ("U (-1500 0 0); T 293;", "T 293; radialVelocity { "
+                       "centre (0 0 0); U -100; radius 1e-3; exponnt -2; }"),
+     ["Body rod, radialVelocity", "exponnt", "did you mean exponent"]),
+    ("radialRadius", ("U (-1500 0 0); T 293;", "T 293; radialVelocity { "
+                      "centre (0 0 0); U -100; radius 0; }"),
+     ["Body rod, radialVelocity: radius 0 must be positive"]),
 ]
 
 
@@ -404,6 +420,40 @@ def check_errors():
         checks.check("impactSetup_error_" + name, fatal and not missing,
                      ("missing %s; " % missing if missing else "")
                      + " ".join(msg)[:300])
+
+
+def check_radial_velocity():
+    text = """geometry axisymmetric;
+domain { min (0 0 0); max (12e-3 12e-3 0); cellSize 0.5e-3;
+         patches { xMin symmetry; xMax open; yMax open; } }
+ambient { material air; p 1e5; T 293; phase gas; }
+bodies
+{
+    shell { shape sphere; centre (0 0 0); radius 10e-3;
+            material steel4340; phase shell; rho 7810;
+            radialVelocity { centre (0 0 0); U -600; radius 8e-3;
+                             exponent -2; } }
+    inside { shape sphere; centre (0 0 0); radius 8e-3; material air;
+             phase gas; T 293; cuts (shell); }
+}
+"""
+    case = new_case("radialVelocity", text)
+    run_setup(case)
+    C = fc.cell_centres(case)
+    U = fc.read_field(case, "0", "U")
+    alpha = fc.read_field(case, "0", "alpha.shell")
+    r = np.sqrt((C**2).sum(axis=1))
+    full = alpha >= 1 - 1e-12
+    air = alpha <= 1e-12
+    exact = (-600*(8e-3/r[full])**2/r[full])[:, None]*C[full]
+    err = abs(U[full] - exact).max()/600 if full.any() else float("nan")
+    still = abs(U[air]).max() if air.any() else float("nan")
+    checks.check("impactSetup_radialVelocity",
+                 full.sum() > 50 and err <= 1e-9 and still == 0,
+                 "%d cells full of the shell: U within %.2e of -600 "
+                 "(8 mm/r)^2 at the centre (relative; bound 1e-9: U and the "
+                 "centres are written with 10 digits); air "
+                 "cells' largest speed %.3g" % (full.sum(), err, still))
 
 
 def check_cuts_and_gap():
@@ -725,6 +775,10 @@ def main():
     os.makedirs(RUN, exist_ok=True)
     check_errors()
     check_cuts_and_gap()
+    try:
+        check_radial_velocity()
+    except fc.FoamError as e:
+        checks.fail("impactSetup_radialVelocity", e.summary or str(e))
     check_copper_rods()
     check_template()
     check_unstructured()
