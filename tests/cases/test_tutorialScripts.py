@@ -17,7 +17,8 @@ command-line convention, rerun-safe, and committed files never touched.
                               holds exactly the committed files, byte for
                               byte (taylorBar, clayImpact, taylorTest,
                               spallPlate, hypervelocityImpact, closedBox
-                              on 2 processes, templates/projectileOnPlate)
+                              on 2 processes, templates/projectileOnPlate,
+                              longRodPenetration)
 About a minute.
 """
 import filecmp
@@ -43,6 +44,7 @@ CLEAN_RUNS = [
     ("hypervelocityImpact", ["-h", "2", "-end", "2e-7"]),
     ("closedBox", ["-np", "2", "-end", "3e-6"]),
     ("templates/projectileOnPlate", ["-h", "1", "-end", "2e-7"]),
+    ("longRodPenetration", ["-h", "2", "-end", "2e-7"]),
 ]
 
 
