@@ -239,6 +239,11 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
         const bool heated = relaxPlastic(c, q, dt);
         if (heated && cell_.nActive > 1)
         {
+            // The traces' reset (4) is paid by the heaviest active phase:
+            // a nearly empty gas that pays it (air in a crater, cold from
+            // expanding, next to a dense metal trace) can be left below
+            // its floor, and the relaxation needs admissible phases
+            vacuumAfterRelaxation(c);
             if (!pressure_.relax(cell_, q, c, pStar))
             {
                 checks_.fail(c, main, "interface pressure (no convergence)", pStar);
