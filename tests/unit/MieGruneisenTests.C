@@ -531,3 +531,67 @@ TEST(MieGruneisen, relaxationServicesAgainstDefinitions)
         << " calls farther)" << std::endl;
     EXPECT_LE(nearMean, 8);
 }
+
+
+TEST(MieGruneisen, combinedRelaxedVolumeAndLinearEnergyShortcut)
+{
+    // vRelaxed(p*, rhoOld, eOld, dvdp) gives the same end state and slope,
+    // bit for bit, as vRelaxed and dvRelaxeddp called apart; and the slope
+    // with the shortcut of a model linear in e (no correction integral R)
+    // equals the generic one that integrates R = 0, bit for bit
+    auto eos = eosFrom(copperDict);
+    ASSERT_TRUE(eos->pLinearInEnergy());
+    // The model's primitives and round-off scale, without the shortcut
+    struct withoutShortcut : public primitivesOnly
+    {
+        const equationOfState& model;
+        explicit withoutShortcut(const equationOfState& m)
+        :
+            primitivesOnly(m),
+            model(m)
+        {}
+        scalar pScale(const scalar rho, const scalar p) const
+        {
+            return model.pScale(rho, p);
+        }
+    };
+    const withoutShortcut generic(eos());
+    ASSERT_FALSE(generic.pLinearInEnergy());
+    label nCompared = 0;
+    for (const scalar etaOld : {-0.2, -0.01, 0.0, 0.05, 0.2, 0.4})
+    {
+        const scalar rhoOld = rhoAt(etaOld);
+        for (const scalar pOld : pressuresAt(eos(), rhoOld))
+        {
+            const scalar eOld = eos->e(rhoOld, pOld);
+            for (const scalar f : {0.5, 0.9, 1.0, 1.1, 2.0})
+            {
+                const scalar pStar =
+                    eos->pMin(rhoOld) + f*(pOld - eos->pMin(rhoOld));
+                SCOPED_TRACE
+                (
+                    "etaOld " + std::to_string(etaOld) + " pOld "
+                  + std::to_string(pOld) + " p* " + std::to_string(pStar)
+                );
+                scalar dvdp;
+                const scalar v = eos->vRelaxed(pStar, rhoOld, eOld, dvdp);
+                EXPECT_EQ(v, eos->vRelaxed(pStar, rhoOld, eOld));
+                EXPECT_EQ(dvdp, eos->dvRelaxeddp(pStar, rhoOld, eOld));
+                EXPECT_EQ(dvdp, generic.dvRelaxeddp(pStar, rhoOld, eOld));
+                ++nCompared;
+            }
+        }
+    }
+    EXPECT_GT(nCompared, 100);
+
+    // The stiffened gas: its closed forms, the same through both calls
+    auto sg = eosFrom("type stiffenedGas; gamma 4.22; pInf 3.42e10;");
+    EXPECT_TRUE(sg->pLinearInEnergy());
+    for (const scalar pStar : {-1e10, 0.0, 1e9})
+    {
+        const scalar eOld = sg->e(8930, 1e5);
+        scalar dvdp;
+        EXPECT_EQ(sg->vRelaxed(pStar, 8930, eOld, dvdp), sg->vRelaxed(pStar, 8930, eOld));
+        EXPECT_EQ(dvdp, sg->dvRelaxeddp(pStar, 8930, eOld));
+    }
+}

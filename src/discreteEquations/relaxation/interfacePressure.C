@@ -48,8 +48,7 @@ Foam::scalar Foam::interfacePressure::relaxedVolume
         dvdp = 0;
         return eos.vRelaxed(cell.pHeld[k], 1/cell.v[k], cell.e[k]);
     }
-    dvdp = eos.dvRelaxeddp(pStar, 1/cell.v[k], cell.e[k]);
-    return eos.vRelaxed(pStar, 1/cell.v[k], cell.e[k]);
+    return eos.vRelaxed(pStar, 1/cell.v[k], cell.e[k], dvdp);
 }
 
 bool Foam::interfacePressure::solve

@@ -162,13 +162,38 @@ Foam::scalar Foam::equationOfState::dvRelaxeddp
     const scalar eOld
 ) const
 {
+    return vRelaxedSlope(vRelaxed(pStar, rhoOld, eOld), pStar, rhoOld, eOld);
+}
+
+
+Foam::scalar Foam::equationOfState::vRelaxed
+(
+    const scalar pStar,
+    const scalar rhoOld,
+    const scalar eOld,
+    scalar& dvdp
+) const
+{
+    const scalar v = vRelaxed(pStar, rhoOld, eOld);
+    dvdp = vRelaxedSlope(v, pStar, rhoOld, eOld);
+    return v;
+}
+
+
+Foam::scalar Foam::equationOfState::vRelaxedSlope
+(
+    const scalar v,
+    const scalar pStar,
+    const scalar rhoOld,
+    const scalar eOld
+) const
+{
     // G(v, pStar) = p(1/v, eOld - pStar (v - vOld)) - pStar = 0 at the end
     // state. With p_rho = dp/drho|e = c2 - p Gamma/rho, p_e = rho Gamma
     // and p = pStar there:
     //   dG/dv = -rho^2 p_rho - pStar rho Gamma = -rho^2 c2,
     //   dG/dpStar = -rho Gamma (v - vOld) - 1,
     // so dv/dpStar = -N/(rho^2 c2), N = 1 + Gamma (1 - rho vOld)
-    const scalar v = vRelaxed(pStar, rhoOld, eOld);
     const scalar rho = 1/v;
     const scalar eh = eOld - pStar*(v - 1/rhoOld);
     const scalar G = Gamma(rho, eh);
@@ -185,7 +210,11 @@ Foam::scalar Foam::equationOfState::dvRelaxeddp
     // form, 1 + Gamma rho vOld
     const scalar pOldEnergy = p(rho, eOld);
     const scalar sAlt = pScale(rho, pOldEnergy);
-    if (sAlt < (1 + mag(G)*rho/rhoOld)*mag(pStar))
+    if (sAlt < (1 + mag(G)*rho/rhoOld)*mag(pStar) && pLinearInEnergy())
+    {
+        N = pOldEnergy/pStar;
+    }
+    else if (sAlt < (1 + mag(G)*rho/rhoOld)*mag(pStar))
     {
         const auto dRde = [this, rho, G](const scalar e1, const scalar)
         {
