@@ -251,12 +251,21 @@ Foam::scalar Foam::equationOfState::pRelaxedMin
     const scalar pOld = p(rhoOld, eOld);
     const scalar s = pScale(rhoOld, pOld);
 
-    // q(v) by Newton's method from qStart; false if it does not converge
-    // or the end state is not admissible
+    // q(v) by Newton's method from qStart (explicit where p is linear in
+    // e: p(rho, eOld) - rho Gamma q (v - vOld) = q); false if it does not
+    // converge or the end state is not admissible
+    const bool linear = pLinearInEnergy();
     const auto endPressure =
         [&](const scalar v, const scalar qStart, scalar& q)
     {
         const scalar rho = 1/v;
+        if (linear)
+        {
+            q = p(rho, eOld)/(1 + Gamma(rho, eOld)*(1 - vOld/v));
+            return
+                std::isfinite(q)
+             && rho < rhoMax() && q > pMin(rho) && c2(rho, q) > 0;
+        }
         q = qStart;
         for (label iter = 0; iter < maxIter; ++iter)
         {
