@@ -28,6 +28,7 @@ Foam::demFaceAssembly::demFaceAssembly
     stride_(nPhases_),
     faceResult_(nPhases_),
     alphaScratch_(nPhases_),
+    nCentres_(0),
     stamp_(0)
 {
     const label nCells = phases.mesh().nCells();
@@ -115,11 +116,12 @@ void Foam::demFaceAssembly::reset()
 
     // The time-centred cell states of the last step are stale
     // (allocated for the cells that hold an internal contact only)
-    if (centres_.empty())
+    if (centreStamp_.empty())
     {
-        centres_.resize(nCells);
+        centreSlot_.resize(nCells, -1);
         centreStamp_.resize(nCells, -1);
     }
+    nCentres_ = 0;
     ++stamp_;
 }
 
@@ -443,10 +445,14 @@ void Foam::demFaceAssembly::internalContacts
     if (centreStamp_[c] != stamp_)
     {
         centreStamp_[c] = stamp_;
-        centres_[c].resize(nPhases_);
-        rec.centreState(c, centres_[c]);
+        if (nCentres_ == label(centres_.size()))
+        {
+            centres_.emplace_back(nPhases_);
+        }
+        centreSlot_[c] = nCentres_++;
+        rec.centreState(c, centres_[centreSlot_[c]]);
     }
-    solveFace(centres_[c], face, faceFrame::rotation(nOut));
+    solveFace(centres_[centreSlot_[c]], face, faceFrame::rotation(nOut));
 
     // Both sides are cell c: the conservative parts cancel exactly, the
     // Lagrangian parts remain

@@ -19,7 +19,6 @@ Foam::demSolver::demSolver
     mesh_(phases.mesh()),
     nPhases_(phases.size()),
     magSf_(mag(mesh_.faceAreas())),
-    frames_(mesh_.nFaces()),
     ownerOffset_(mesh_.nInternalFaces()),
     neighbourOffset_(mesh_.nInternalFaces()),
     boundaryOffset_(mesh_.nFaces() - mesh_.nInternalFaces()),
@@ -38,13 +37,6 @@ Foam::demSolver::demSolver
     patchForces_(mesh_.boundary().size(), Zero)
 {
     reconstruction_->setFirstOrderCells(&fallback_.cells());
-
-    const vectorField& Sf = mesh_.faceAreas();
-    forAll(Sf, facei)
-    {
-        frames_[facei] =
-            faceFrame::rotation(toEigen(Sf[facei]/magSf_[facei]));
-    }
 
     setOffsets();
 
@@ -129,7 +121,7 @@ void Foam::demSolver::internalFaces()
             rec.faceState(nb, facei, neighbourOffset_[facei], faceN_);
         }
 
-        assembly_.solveFace(faceO_, faceN_, frames_[facei], fallback);
+        assembly_.solveFace(faceO_, faceN_, frame(facei), fallback);
 
         const cobasis::vector S(toEigen(Sf[facei]));
         assembly_.addToCell(o, 0, magSf_[facei]);
@@ -248,7 +240,7 @@ void Foam::demSolver::boundaryFaces()
                 // solution, then the image face's
                 assembly_.solveFace
                 (
-                    side, side, frames_[facei], fallback, true
+                    side, side, frame(facei), fallback, true
                 );
                 assembly_.addToCell(celli, 0, magSf_[facei]);
                 cobasis_.addFace(celli, S, side, side, assembly_);
@@ -260,7 +252,7 @@ void Foam::demSolver::boundaryFaces()
 
             if (cellIsLeft)
             {
-                assembly_.solveFace(side, ghost_, frames_[facei], fallback);
+                assembly_.solveFace(side, ghost_, frame(facei), fallback);
             }
             else
             {
