@@ -155,32 +155,7 @@ Foam::scalar Foam::equationOfState::vRelaxed
 }
 
 
-Foam::scalar Foam::equationOfState::dvRelaxeddp
-(
-    const scalar pStar,
-    const scalar rhoOld,
-    const scalar eOld
-) const
-{
-    return vRelaxedSlope(vRelaxed(pStar, rhoOld, eOld), pStar, rhoOld, eOld);
-}
-
-
-Foam::scalar Foam::equationOfState::vRelaxed
-(
-    const scalar pStar,
-    const scalar rhoOld,
-    const scalar eOld,
-    scalar& dvdp
-) const
-{
-    const scalar v = vRelaxed(pStar, rhoOld, eOld);
-    dvdp = vRelaxedSlope(v, pStar, rhoOld, eOld);
-    return v;
-}
-
-
-Foam::scalar Foam::equationOfState::vRelaxedSlope
+Foam::scalar Foam::equationOfState::dvRelaxeddpAt
 (
     const scalar v,
     const scalar pStar,
@@ -210,12 +185,10 @@ Foam::scalar Foam::equationOfState::vRelaxedSlope
     // form, 1 + Gamma rho vOld
     const scalar pOldEnergy = p(rho, eOld);
     const scalar sAlt = pScale(rho, pOldEnergy);
-    if (sAlt < (1 + mag(G)*rho/rhoOld)*mag(pStar) && pLinearInEnergy())
+    if (sAlt < (1 + mag(G)*rho/rhoOld)*mag(pStar))
     {
-        N = pOldEnergy/pStar;
-    }
-    else if (sAlt < (1 + mag(G)*rho/rhoOld)*mag(pStar))
-    {
+        // R vanishes where p is linear in e: no integral to take
+        scalar R = 0;
         const auto dRde = [this, rho, G](const scalar e1, const scalar)
         {
             return rho*(Gamma(rho, e1) - G);
@@ -224,8 +197,11 @@ Foam::scalar Foam::equationOfState::vRelaxedSlope
         {
             return sAlt;
         };
-        scalar R;
-        if (scalarODE::integrate(dRde, scale, eh, 0, eOld, tolerance, R))
+        if
+        (
+            pLinearInEnergy()
+         || scalarODE::integrate(dRde, scale, eh, 0, eOld, tolerance, R)
+        )
         {
             N = (pOldEnergy - R)/pStar;
         }
@@ -255,6 +231,10 @@ Foam::scalar Foam::equationOfState::pRelaxedMin
     // e: p(rho, eOld) - rho Gamma q (v - vOld) = q); false if it does not
     // converge or the end state is not admissible
     const bool linear = pLinearInEnergy();
+    const auto admissibleEnd = [this](const scalar rho, const scalar q)
+    {
+        return rho < rhoMax() && q > pMin(rho) && c2(rho, q) > 0;
+    };
     const auto endPressure =
         [&](const scalar v, const scalar qStart, scalar& q)
     {
@@ -262,9 +242,7 @@ Foam::scalar Foam::equationOfState::pRelaxedMin
         if (linear)
         {
             q = p(rho, eOld)/(1 + Gamma(rho, eOld)*(1 - vOld/v));
-            return
-                std::isfinite(q)
-             && rho < rhoMax() && q > pMin(rho) && c2(rho, q) > 0;
+            return std::isfinite(q) && admissibleEnd(rho, q);
         }
         q = qStart;
         for (label iter = 0; iter < maxIter; ++iter)
@@ -283,8 +261,7 @@ Foam::scalar Foam::equationOfState::pRelaxedMin
             // tension, q ~ -rho0^2 c0^2 v/2), and its round-off with it
             if (mag(dq) <= tolerance*(s + mag(q)))
             {
-                return
-                    rho < rhoMax() && q > pMin(rho) && c2(rho, q) > 0;
+                return admissibleEnd(rho, q);
             }
         }
         return false;
