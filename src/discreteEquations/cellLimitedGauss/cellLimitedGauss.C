@@ -34,7 +34,7 @@ void Foam::cellLimitedGauss::gradFields
     const volScalarField* const vf[N],
     vectorField* const g[N],
     const boolList* active
-)
+) const
 {
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
@@ -44,15 +44,26 @@ void Foam::cellLimitedGauss::gradFields
     const vectorField& Cf = mesh_.Cf().primitiveField();
     const scalarField& V = mesh_.V();
     const label nCells = mesh_.nCells();
+    const label nPatches = mesh_.boundary().size();
 
     const scalarField* v[N];
+    List<scalarField> nbr[N];
     for (int i = 0; i < N; ++i)
     {
         v[i] = &vf[i]->primitiveField();
         g[i]->setSize(nCells);
         *g[i] = Zero;
-        vMax_[i] = *v[i];
-        vMin_[i] = *v[i];
+
+        // The neighbouring processors' values
+        nbr[i].setSize(nPatches);
+        for (label patchi = 0; patchi < nPatches; ++patchi)
+        {
+            const fvPatchScalarField& pv = vf[i]->boundaryField()[patchi];
+            if (pv.coupled())
+            {
+                nbr[i][patchi] = pv.patchNeighbourField();
+            }
+        }
     }
 
     // Only the cells that read their slope need it
@@ -61,7 +72,7 @@ void Foam::cellLimitedGauss::gradFields
         return active && !(*active)[c];
     };
 
-    // Gauss sums and the neighbours' range, internal faces
+    // Gauss sums, internal faces
     forAll(nei, facei)
     {
         const label o = own[facei];
@@ -74,24 +85,17 @@ void Foam::cellLimitedGauss::gradFields
         {
             const scalarField& vi = *v[i];
             vectorField& gi = *g[i];
-            scalarField& vMax = vMax_[i];
-            scalarField& vMin = vMin_[i];
             const vector Sv
             (
                 Sf[facei]*(w[facei]*(vi[o] - vi[n]) + vi[n])
             );
             gi[o] += Sv;
             gi[n] -= Sv;
-
-            vMax[o] = max(vMax[o], vi[n]);
-            vMin[o] = min(vMin[o], vi[n]);
-            vMax[n] = max(vMax[n], vi[o]);
-            vMin[n] = min(vMin[n], vi[o]);
         }
     }
 
     // Boundary faces (an empty patch has no faces here)
-    forAll(mesh_.boundary(), patchi)
+    for (label patchi = 0; patchi < nPatches; ++patchi)
     {
         const fvPatch& patch = mesh_.boundary()[patchi];
         const labelUList& fc = patch.faceCells();
@@ -101,19 +105,15 @@ void Foam::cellLimitedGauss::gradFields
         {
             const fvPatchScalarField& pv = vf[i]->boundaryField()[patchi];
             vectorField& gi = *g[i];
-            scalarField& vMax = vMax_[i];
-            scalarField& vMin = vMin_[i];
             if (pv.coupled())
             {
                 const scalarField& pw =
                     mesh_.weights().boundaryField()[patchi];
-                const scalarField vi(pv.patchInternalField());
-                const scalarField vn(pv.patchNeighbourField());
+                const scalarField& vn = nbr[i][patchi];
                 forAll(patch, j)
                 {
-                    gi[fc[j]] += pSf[j]*(pw[j]*vi[j] + (1.0 - pw[j])*vn[j]);
-                    vMax[fc[j]] = max(vMax[fc[j]], vn[j]);
-                    vMin[fc[j]] = min(vMin[fc[j]], vn[j]);
+                    const scalar vc = (*v[i])[fc[j]];
+                    gi[fc[j]] += pSf[j]*(pw[j]*vc + (1.0 - pw[j])*vn[j]);
                 }
             }
             else
@@ -121,82 +121,104 @@ void Foam::cellLimitedGauss::gradFields
                 forAll(patch, j)
                 {
                     gi[fc[j]] += pSf[j]*pv[j];
-                    vMax[fc[j]] = max(vMax[fc[j]], pv[j]);
-                    vMin[fc[j]] = min(vMin[fc[j]], pv[j]);
                 }
             }
         }
     }
 
-    for (label c = 0; c < nCells; ++c)
-    {
-        for (int i = 0; i < N; ++i)
-        {
-            if (skip(c))
-            {
-                (*g[i])[c] = Zero;
-                continue;
-            }
-            (*g[i])[c] /= V[c];
-            vMax_[i][c] -= (*v[i])[c];
-            vMin_[i][c] -= (*v[i])[c];
-        }
-    }
+    // Cell by cell: the range over the cell, its face neighbours and its
+    // boundary values, then the Barth-Jespersen factor (minmod of r, as
+    // cellLimitedGrad) over its faces, applied to the slope
+    const cellList& cells = mesh_.cells();
+    const labelList& facePatch = mesh_.boundaryMesh().patchID();
+    const label nInternal = mesh_.nInternalFaces();
 
-    // The Barth-Jespersen factors (minmod of r, as cellLimitedGrad)
-    for (int i = 0; i < N; ++i)
+    // The neighbour's value and the face centre of face facei of cell c;
+    // false for a face of an empty patch
+    const auto across = [&]
+    (
+        const int i,
+        const label c,
+        const label facei,
+        scalar& vn,
+        const vector*& xf
+    )
     {
-        limiter_[i].setSize(nCells);
-        limiter_[i] = 1;
-    }
-    const auto limitFace = [&](const label c, const vector& dx)
+        if (facei < nInternal)
+        {
+            vn = (*v[i])[own[facei] == c ? nei[facei] : own[facei]];
+            xf = &Cf[facei];
+            return true;
+        }
+        const label patchi = facePatch[facei - nInternal];
+        const fvPatch& patch = mesh_.boundary()[patchi];
+        if (patch.size() == 0)
+        {
+            return false;
+        }
+        const label j = facei - patch.start();
+        const fvPatchScalarField& pv = vf[i]->boundaryField()[patchi];
+        vn = pv.coupled() ? nbr[i][patchi][j] : pv[j];
+        xf = &mesh_.Cf().boundaryField()[patchi][j];
+        return true;
+    };
+
+    for (label c = 0; c < nCells; ++c)
     {
         if (skip(c))
         {
-            return;
+            for (int i = 0; i < N; ++i)
+            {
+                (*g[i])[c] = Zero;
+            }
+            continue;
         }
+        const labelList& cFaces = cells[c];
         for (int i = 0; i < N; ++i)
         {
-            const scalar extrapolate = dx & (*g[i])[c];
-            scalar r;
-            if (extrapolate > SMALL)
-            {
-                r = vMax_[i][c]/extrapolate;
-            }
-            else if (extrapolate < -SMALL)
-            {
-                r = vMin_[i][c]/extrapolate;
-            }
-            else
-            {
-                continue;
-            }
-            limiter_[i][c] = min(limiter_[i][c], min(r, scalar(1)));
-        }
-    };
-    forAll(nei, facei)
-    {
-        limitFace(own[facei], Cf[facei] - C[own[facei]]);
-        limitFace(nei[facei], Cf[facei] - C[nei[facei]]);
-    }
-    forAll(mesh_.boundary(), patchi)
-    {
-        const fvPatch& patch = mesh_.boundary()[patchi];
-        const labelUList& fc = patch.faceCells();
-        const vectorField& pCf = mesh_.Cf().boundaryField()[patchi];
-        forAll(patch, j)
-        {
-            limitFace(fc[j], pCf[j] - C[fc[j]]);
-        }
-    }
+            const scalar vc = (*v[i])[c];
+            vector& gc = (*g[i])[c];
+            gc /= V[c];
 
-    for (int i = 0; i < N; ++i)
-    {
-        vectorField& gi = *g[i];
-        const scalarField& l = limiter_[i];
-        for (label c = 0; c < nCells; ++c)
-        {
-            gi[c] *= l[c];
+            scalar vMax = vc;
+            scalar vMin = vc;
+            scalar vn;
+            const vector* xf;
+            for (const label facei : cFaces)
+            {
+                if (across(i, c, facei, vn, xf))
+                {
+                    vMax = max(vMax, vn);
+                    vMin = min(vMin, vn);
+                }
+            }
+            vMax -= vc;
+            vMin -= vc;
+
+            scalar l = 1;
+            for (const label facei : cFaces)
+            {
+                if (!across(i, c, facei, vn, xf))
+                {
+                    continue;
+                }
+                const scalar extrapolate = (*xf - C[c]) & gc;
+                scalar r;
+                if (extrapolate > SMALL)
+                {
+                    r = vMax/extrapolate;
+                }
+                else if (extrapolate < -SMALL)
+                {
+                    r = vMin/extrapolate;
+                }
+                else
+                {
+                    continue;
+                }
+                l = min(l, min(r, scalar(1)));
+            }
+            gc *= l;
         }
     }
 }
@@ -207,7 +229,7 @@ void Foam::cellLimitedGauss::grad
     const volScalarField& vf,
     vectorField& g,
     const boolList* active
-)
+) const
 {
     const volScalarField* const f[1] = {&vf};
     vectorField* const gs[1] = {&g};
@@ -222,7 +244,7 @@ void Foam::cellLimitedGauss::grad
     vectorField& g1,
     vectorField& g2,
     const boolList* active
-)
+) const
 {
     const volScalarField* const f[2] = {&vf1, &vf2};
     vectorField* const gs[2] = {&g1, &g2};

@@ -44,12 +44,12 @@ Type Foam::cellLimiter::value
 }
 
 
-template<class Type, class Extrapolate>
-void Foam::cellLimiter::factors
+template<class Type, class Extrapolate, class Apply>
+void Foam::cellLimiter::limit
 (
     const GeometricField<Type, fvPatchField, volMesh>& vf,
     const Extrapolate& extrapolate,
-    Field<Type>& limiter,
+    const Apply& apply,
     const boolList* active
 ) const
 {
@@ -57,94 +57,104 @@ void Foam::cellLimiter::factors
     const labelUList& nei = mesh_.neighbour();
     const vectorField& C = mesh_.cellCentres();
     const vectorField& Cf = mesh_.faceCentres();
+    const cellList& cells = mesh_.cells();
+    const labelList& facePatch = mesh_.boundaryMesh().patchID();
+    const label nInternal = mesh_.nInternalFaces();
     const Field<Type>& v = vf.primitiveField();
 
-    // Range of the cell and its neighbours
-    Field<Type>* scratch = range(static_cast<const Type*>(nullptr));
-    Field<Type>& vMax = scratch[0];
-    Field<Type>& vMin = scratch[1];
-    vMax = v;
-    vMin = v;
-    forAll(nei, facei)
+    // The neighbouring processors' values, patch by patch
+    List<Field<Type>> nbr(kinds_.size());
+    forAll(kinds_, patchi)
     {
-        const label o = own[facei];
-        const label n = nei[facei];
-        if (active && !(*active)[o] && !(*active)[n])
-        {
-            continue;
-        }
-        vMax[o] = max(vMax[o], v[n]);
-        vMin[o] = min(vMin[o], v[n]);
-        vMax[n] = max(vMax[n], v[o]);
-        vMin[n] = min(vMin[n], v[o]);
-    }
-    forAll(mesh_.boundary(), patchi)
-    {
-        if (kinds_[patchi] == neighbour::none) continue;
-        const labelUList& fc = mesh_.boundary()[patchi].faceCells();
-        Field<Type> nbr;
         if (kinds_[patchi] == neighbour::coupled)
         {
-            nbr = vf.boundaryField()[patchi].patchNeighbourField();
-        }
-        forAll(fc, i)
-        {
-            if (active && !(*active)[fc[i]])
-            {
-                continue;
-            }
-            const Type vn(value(patchi, i, vf, nbr));
-            vMax[fc[i]] = max(vMax[fc[i]], vn);
-            vMin[fc[i]] = min(vMin[fc[i]], vn);
+            nbr[patchi] = vf.boundaryField()[patchi].patchNeighbourField();
         }
     }
 
-    limiter.setSize(v.size());
-    limiter = pTraits<Type>::one;
-    const auto limitFace = [&](const label celli, const vector& dx)
+    forAll(cells, celli)
     {
         if (active && !(*active)[celli])
         {
-            return;
-        }
-        const Type dv(extrapolate(celli, dx));
-        for (direction cmpt = 0; cmpt < pTraits<Type>::nComponents; ++cmpt)
-        {
-            const scalar d = component(dv, cmpt);
-            scalar r = 1;
-            if (d > VSMALL)
-            {
-                r = (component(vMax[celli], cmpt) - component(v[celli], cmpt))/d;
-            }
-            else if (d < -VSMALL)
-            {
-                r = (component(vMin[celli], cmpt) - component(v[celli], cmpt))/d;
-            }
-            scalar& l = setComponent(limiter[celli], cmpt);
-            l = min(l, r);
-        }
-    };
-    forAll(nei, facei)
-    {
-        limitFace(own[facei], Cf[facei] - C[own[facei]]);
-        limitFace(nei[facei], Cf[facei] - C[nei[facei]]);
-    }
-    forAll(mesh_.boundary(), patchi)
-    {
-        if
-        (
-            kinds_[patchi] == neighbour::none
-         || kinds_[patchi] == neighbour::wedge
-        )
-        {
             continue;
         }
-        const fvPatch& patch = mesh_.boundary()[patchi];
-        const labelUList& fc = patch.faceCells();
-        forAll(fc, i)
+        const labelList& cFaces = cells[celli];
+        const Type& vc = v[celli];
+
+        // The range of the cell and its neighbours (the order of max and
+        // min does not matter: the face loop's range, bit for bit)
+        Type vMax(vc);
+        Type vMin(vc);
+        for (const label facei : cFaces)
         {
-            limitFace(fc[i], patch.Cf()[i] - C[fc[i]]);
+            if (facei < nInternal)
+            {
+                const Type& vn =
+                    v[own[facei] == celli ? nei[facei] : own[facei]];
+                vMax = max(vMax, vn);
+                vMin = min(vMin, vn);
+                continue;
+            }
+            const label patchi = facePatch[facei - nInternal];
+            if
+            (
+                kinds_[patchi] == neighbour::none
+             || mesh_.boundary()[patchi].size() == 0
+            )
+            {
+                continue;
+            }
+            const Type vn
+            (
+                value
+                (
+                    patchi,
+                    facei - mesh_.boundaryMesh()[patchi].start(),
+                    vf,
+                    nbr[patchi]
+                )
+            );
+            vMax = max(vMax, vn);
+            vMin = min(vMin, vn);
         }
+
+        // The largest factors that keep every face-centre extrapolation in
+        // the range
+        Type l(pTraits<Type>::one);
+        for (const label facei : cFaces)
+        {
+            if (facei >= nInternal)
+            {
+                const label patchi = facePatch[facei - nInternal];
+                if
+                (
+                    kinds_[patchi] == neighbour::none
+                 || kinds_[patchi] == neighbour::wedge
+                 || mesh_.boundary()[patchi].size() == 0
+                )
+                {
+                    continue;
+                }
+            }
+            const Type dv(extrapolate(celli, Cf[facei] - C[celli]));
+            for (direction cmpt = 0; cmpt < pTraits<Type>::nComponents; ++cmpt)
+            {
+                const scalar d = component(dv, cmpt);
+                scalar r = 1;
+                if (d > VSMALL)
+                {
+                    r = (component(vMax, cmpt) - component(vc, cmpt))/d;
+                }
+                else if (d < -VSMALL)
+                {
+                    r = (component(vMin, cmpt) - component(vc, cmpt))/d;
+                }
+                scalar& lc = setComponent(l, cmpt);
+                lc = min(lc, r);
+            }
+        }
+
+        apply(celli, l);
     }
 }
 

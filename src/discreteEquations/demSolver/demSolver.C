@@ -19,8 +19,6 @@ Foam::demSolver::demSolver
     mesh_(phases.mesh()),
     nPhases_(phases.size()),
     magSf_(mag(mesh_.faceAreas())),
-    ownerOffset_(mesh_.nInternalFaces()),
-    neighbourOffset_(mesh_.nInternalFaces()),
     boundaryOffset_(mesh_.nFaces() - mesh_.nInternalFaces()),
     cells_(phases),
     timeStep_(phases, magSf_),
@@ -60,16 +58,8 @@ Foam::demSolver::demSolver
 
 void Foam::demSolver::setOffsets()
 {
-    const labelUList& own = mesh_.owner();
-    const labelUList& nei = mesh_.neighbour();
     const vectorField& Cf = mesh_.faceCentres();
     const vectorField& C = mesh_.cellCentres();
-
-    forAll(nei, facei)
-    {
-        ownerOffset_[facei] = Cf[facei] - C[own[facei]];
-        neighbourOffset_[facei] = Cf[facei] - C[nei[facei]];
-    }
 
     const boundaryKinds& kinds = phases_.boundary();
     const label nInternal = mesh_.nInternalFaces();
@@ -101,6 +91,8 @@ void Foam::demSolver::internalFaces()
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
     const vectorField& Sf = mesh_.faceAreas();
+    const vectorField& Cf = mesh_.faceCentres();
+    const vectorField& C = mesh_.cellCentres();
     const reconstruction& rec = reconstruction_();
     const bool centred = rec.timeCentred();
 
@@ -117,8 +109,9 @@ void Foam::demSolver::internalFaces()
         }
         else
         {
-            rec.faceState(o, facei, ownerOffset_[facei], faceO_);
-            rec.faceState(nb, facei, neighbourOffset_[facei], faceN_);
+            // The offsets of the face centre from the cell centres
+            rec.faceState(o, facei, Cf[facei] - C[o], faceO_);
+            rec.faceState(nb, facei, Cf[facei] - C[nb], faceN_);
         }
 
         assembly_.solveFace(faceO_, faceN_, frame(facei), fallback);

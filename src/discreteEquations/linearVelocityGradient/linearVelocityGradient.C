@@ -115,26 +115,23 @@ void Foam::linearVelocityGradient::calculate
         return;
     }
 
-    // Barth-Jespersen, component by component
-    vectorField& limiter = limiter_;
-    stencil_.factors
+    // Barth-Jespersen, component by component; column j of grad(U) is
+    // the gradient of component j
+    stencil_.limit
     (
         U,
         [&gradU](const label celli, const vector& dx)
         {
             return vector(dx & gradU[celli]);
         },
-        limiter
+        [&gradU](const label celli, const vector& l)
+        {
+            tensor& g = gradU[celli];
+            g.xx() *= l.x(); g.yx() *= l.x(); g.zx() *= l.x();
+            g.xy() *= l.y(); g.yy() *= l.y(); g.zy() *= l.y();
+            g.xz() *= l.z(); g.yz() *= l.z(); g.zz() *= l.z();
+        }
     );
-    forAll(gradU, celli)
-    {
-        const vector& l = limiter[celli];
-        tensor& g = gradU[celli];
-        // Column j of grad(U) is the gradient of component j
-        g.xx() *= l.x(); g.yx() *= l.x(); g.zx() *= l.x();
-        g.xy() *= l.y(); g.yy() *= l.y(); g.zy() *= l.y();
-        g.xz() *= l.z(); g.yz() *= l.z(); g.zz() *= l.z();
-    }
 }
 
 

@@ -230,15 +230,9 @@ void Foam::reconstructions::MUSCLHancock::setCellSlopes
             continue;
         }
 
+        // A solid's cobasis slopes are in place (cobasisGradient)
         sl.gRho = toEigen(gRho_[c]);
         sl.gP = toEigen(gP_[c]);
-        if (so)
-        {
-            for (int i = 0; i < 3; ++i)
-            {
-                so->gA[i] = toEigen(cobasisGradient_.dAdx(i)[c]);
-            }
-        }
         predictor_.predict
         (
             k, c, halfDt, rho[c], p[c], U[c], A[c], gradU_[c], a, sl, so
@@ -299,7 +293,10 @@ void Foam::reconstructions::MUSCLHancock::update
         alphaProfile_->correctSlopes(alpha, minAlpha_, maxAlpha_, gAlpha_);
         if (phases_.phase(k).solid())
         {
-            cobasisGradient_.calculate(phases_.A(k), slopeCells_);
+            cobasisGradient_.calculate
+            (
+                phases_.A(k), slopeCells_, solidSlopes_[k]
+            );
         }
 
         // Per cell: alpha's profile, the slopes, the half-step increments

@@ -20,8 +20,9 @@ Foam::cobasisGradient::cobasisGradient
 void Foam::cobasisGradient::gaussSlopes
 (
     const volTensorField& A,
-    const boolList& active
-)
+    const boolList& active,
+    std::vector<solidSlopes>& slopes
+) const
 {
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
@@ -31,18 +32,15 @@ void Foam::cobasisGradient::gaussSlopes
 
     // Only the marked cells are summed, divided and read
     const label nCells = mesh_.nCells();
-    for (int i = 0; i < 3; ++i)
+    for (label c = 0; c < nCells; ++c)
     {
-        dAdx_[i].resize(nCells);
-        tensorField& g = dAdx_[i];
-        for (label c = 0; c < nCells; ++c)
-        {
-            if (active[c]) g[c] = Zero;
-        }
+        if (!active[c]) continue;
+        for (int i = 0; i < 3; ++i) slopes[c].gA[i].setZero();
     }
 
-    // Adds S_i A_f to cell c's sum of direction i
-    const auto add = [this, &active]
+    // Adds S_i A_f to cell c's sum of direction i, component by component
+    // (A_f row-major, gA(r, s) = dA_rs/dx_i)
+    const auto add = [&slopes, &active]
     (
         const label c,
         const vector& S,
@@ -52,7 +50,14 @@ void Foam::cobasisGradient::gaussSlopes
         if (!active[c]) return;
         for (int i = 0; i < 3; ++i)
         {
-            dAdx_[i][c] += S[i]*Af;
+            cobasis::matrix& g = slopes[c].gA[i];
+            for (direction r = 0; r < 3; ++r)
+            {
+                for (direction s = 0; s < 3; ++s)
+                {
+                    g(r, s) += S[i]*Af[3*r + s];
+                }
+            }
         }
     };
 
@@ -102,11 +107,16 @@ void Foam::cobasisGradient::gaussSlopes
     }
 
     const scalarField& V = mesh_.V();
-    for (int i = 0; i < 3; ++i)
+    forAll(V, c)
     {
-        forAll(V, c)
+        if (!active[c]) continue;
+        for (int i = 0; i < 3; ++i)
         {
-            if (active[c]) dAdx_[i][c] /= V[c];
+            double* g = slopes[c].gA[i].data();
+            for (direction cmpt = 0; cmpt < 9; ++cmpt)
+            {
+                g[cmpt] /= V[c];
+            }
         }
     }
 }
@@ -115,39 +125,46 @@ void Foam::cobasisGradient::gaussSlopes
 void Foam::cobasisGradient::limit
 (
     const volTensorField& A,
-    const boolList& active
-)
+    const boolList& active,
+    std::vector<solidSlopes>& slopes
+) const
 {
-    limiter_->factors
+    // Tensor component 3 r + s is gA(r, s)
+    limiter_->limit
     (
         A,
-        [this](const label celli, const vector& dx)
+        [&slopes](const label celli, const vector& dx)
         {
+            const cobasis::matrix* g = slopes[celli].gA;
             tensor dA;
-            for (direction cmpt = 0; cmpt < 9; ++cmpt)
+            for (direction r = 0; r < 3; ++r)
             {
-                dA[cmpt] =
-                    dx.x()*dAdx_[0][celli][cmpt]
-                  + dx.y()*dAdx_[1][celli][cmpt]
-                  + dx.z()*dAdx_[2][celli][cmpt];
+                for (direction s = 0; s < 3; ++s)
+                {
+                    dA[3*r + s] =
+                        dx.x()*g[0](r, s)
+                      + dx.y()*g[1](r, s)
+                      + dx.z()*g[2](r, s);
+                }
             }
             return dA;
         },
-        limiterA_,
+        [&slopes](const label celli, const tensor& l)
+        {
+            cobasis::matrix* g = slopes[celli].gA;
+            for (int i = 0; i < 3; ++i)
+            {
+                for (direction r = 0; r < 3; ++r)
+                {
+                    for (direction s = 0; s < 3; ++s)
+                    {
+                        g[i](r, s) *= l[3*r + s];
+                    }
+                }
+            }
+        },
         &active
     );
-    for (int i = 0; i < 3; ++i)
-    {
-        tensorField& g = dAdx_[i];
-        forAll(g, celli)
-        {
-            if (!active[celli]) continue;
-            for (direction cmpt = 0; cmpt < 9; ++cmpt)
-            {
-                g[celli][cmpt] *= limiterA_[celli][cmpt];
-            }
-        }
-    }
 }
 
 
@@ -156,13 +173,14 @@ void Foam::cobasisGradient::limit
 void Foam::cobasisGradient::calculate
 (
     const volTensorField& A,
-    const boolList& active
-)
+    const boolList& active,
+    std::vector<solidSlopes>& slopes
+) const
 {
-    gaussSlopes(A, active);
+    gaussSlopes(A, active, slopes);
     if (limiter_.valid())
     {
-        limit(A, active);
+        limit(A, active, slopes);
     }
 }
 
