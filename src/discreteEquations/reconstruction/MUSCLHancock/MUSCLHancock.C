@@ -194,6 +194,7 @@ void Foam::reconstructions::MUSCLHancock::setCellSlopes
     const vectorField& U = phases_.U().primitiveField();
     const tensorField& A = phases_.A(k).primitiveField();
 
+    alphaProfile_->beginPhase(k);
     forAll(alpha, c)
     {
         phaseSlopes& sl = slopes_[k][c];

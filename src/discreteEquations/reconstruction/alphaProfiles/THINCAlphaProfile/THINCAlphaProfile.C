@@ -36,7 +36,8 @@ Foam::THINCAlphaProfile::THINCAlphaProfile
     alphaProfile(phases, true),
     fullRange_(readRange(dict)),
     thinc_(readBeta(dict)),
-    profiles_(phases.size())
+    profiles_(phases.size()),
+    slot_(phases.size(), labelList(mesh_.nCells(), -1))
 {
     if (dict.isDict("THINCCoeffs"))
     {
@@ -46,10 +47,6 @@ Foam::THINCAlphaProfile::THINCAlphaProfile
             {"range", "beta"},
             "discreteEquations THINCCoeffs"
         );
-    }
-    for (auto& profiles : profiles_)
-    {
-        profiles.resize(mesh_.nCells());
     }
 }
 
@@ -178,7 +175,9 @@ bool Foam::THINCAlphaProfile::setInterface
         hi = max(hi, fHi);
     }
 
-    profile& pr = profiles_[k][c];
+    slot_[k][c] = profiles_[k].size();
+    profiles_[k].emplace_back();
+    profile& pr = profiles_[k].back();
     pr.nAlpha = toEigen(n);
     pr.xLow = lo;
     pr.h = hi - lo;
@@ -210,6 +209,13 @@ bool Foam::THINCAlphaProfile::setInterface
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::THINCAlphaProfile::beginPhase(const label k)
+{
+    // The storage is kept from step to step: clear keeps the capacity
+    profiles_[k].clear();
+}
+
+
 Foam::scalar Foam::THINCAlphaProfile::profileFaceAlpha
 (
     const label k,
@@ -218,7 +224,7 @@ Foam::scalar Foam::THINCAlphaProfile::profileFaceAlpha
     const vector& d
 ) const
 {
-    const profile& pr = profiles_[k][c];
+    const profile& pr = profiles_[k][slot_[k][c]];
 
     // The face's spread along n from its points, its centre from d (on a
     // wedge face d is the centre turned into the cell's plane)
