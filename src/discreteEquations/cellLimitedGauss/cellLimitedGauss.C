@@ -133,36 +133,6 @@ void Foam::cellLimitedGauss::gradFields
     const labelList& facePatch = mesh_.boundaryMesh().patchID();
     const label nInternal = mesh_.nInternalFaces();
 
-    // The neighbour's value and the face centre of face facei of cell c;
-    // false for a face of an empty patch
-    const auto across = [&]
-    (
-        const int i,
-        const label c,
-        const label facei,
-        scalar& vn,
-        const vector*& xf
-    )
-    {
-        if (facei < nInternal)
-        {
-            vn = (*v[i])[own[facei] == c ? nei[facei] : own[facei]];
-            xf = &Cf[facei];
-            return true;
-        }
-        const label patchi = facePatch[facei - nInternal];
-        const fvPatch& patch = mesh_.boundary()[patchi];
-        if (patch.size() == 0)
-        {
-            return false;
-        }
-        const label j = facei - patch.start();
-        const fvPatchScalarField& pv = vf[i]->boundaryField()[patchi];
-        vn = pv.coupled() ? nbr[i][patchi][j] : pv[j];
-        xf = &mesh_.Cf().boundaryField()[patchi][j];
-        return true;
-    };
-
     for (label c = 0; c < nCells; ++c)
     {
         if (skip(c))
@@ -174,51 +144,78 @@ void Foam::cellLimitedGauss::gradFields
             continue;
         }
         const labelList& cFaces = cells[c];
+
+        scalar vMax[N], vMin[N];
         for (int i = 0; i < N; ++i)
         {
-            const scalar vc = (*v[i])[c];
-            vector& gc = (*g[i])[c];
-            gc /= V[c];
-
-            scalar vMax = vc;
-            scalar vMin = vc;
-            scalar vn;
-            const vector* xf;
-            for (const label facei : cFaces)
+            (*g[i])[c] /= V[c];
+            vMax[i] = vMin[i] = (*v[i])[c];
+        }
+        for (const label facei : cFaces)
+        {
+            if (facei < nInternal)
             {
-                if (across(i, c, facei, vn, xf))
+                const label n = own[facei] == c ? nei[facei] : own[facei];
+                for (int i = 0; i < N; ++i)
                 {
-                    vMax = max(vMax, vn);
-                    vMin = min(vMin, vn);
+                    vMax[i] = max(vMax[i], (*v[i])[n]);
+                    vMin[i] = min(vMin[i], (*v[i])[n]);
                 }
+                continue;
             }
-            vMax -= vc;
-            vMin -= vc;
-
-            scalar l = 1;
-            for (const label facei : cFaces)
+            const label patchi = facePatch[facei - nInternal];
+            const fvPatch& patch = mesh_.boundary()[patchi];
+            if (patch.size() == 0) continue;
+            const label j = facei - patch.start();
+            for (int i = 0; i < N; ++i)
             {
-                if (!across(i, c, facei, vn, xf))
-                {
-                    continue;
-                }
-                const scalar extrapolate = (*xf - C[c]) & gc;
+                const fvPatchScalarField& pv = vf[i]->boundaryField()[patchi];
+                const scalar vn = pv.coupled() ? nbr[i][patchi][j] : pv[j];
+                vMax[i] = max(vMax[i], vn);
+                vMin[i] = min(vMin[i], vn);
+            }
+        }
+        scalar l[N];
+        for (int i = 0; i < N; ++i)
+        {
+            vMax[i] -= (*v[i])[c];
+            vMin[i] -= (*v[i])[c];
+            l[i] = 1;
+        }
+
+        for (const label facei : cFaces)
+        {
+            const vector* xf = &Cf[facei];
+            if (facei >= nInternal)
+            {
+                const label patchi = facePatch[facei - nInternal];
+                const fvPatch& patch = mesh_.boundary()[patchi];
+                if (patch.size() == 0) continue;
+                xf = &mesh_.Cf().boundaryField()[patchi][facei - patch.start()];
+            }
+            const vector dx(*xf - C[c]);
+            for (int i = 0; i < N; ++i)
+            {
+                const scalar extrapolate = dx & (*g[i])[c];
                 scalar r;
                 if (extrapolate > SMALL)
                 {
-                    r = vMax/extrapolate;
+                    r = vMax[i]/extrapolate;
                 }
                 else if (extrapolate < -SMALL)
                 {
-                    r = vMin/extrapolate;
+                    r = vMin[i]/extrapolate;
                 }
                 else
                 {
                     continue;
                 }
-                l = min(l, min(r, scalar(1)));
+                l[i] = min(l[i], min(r, scalar(1)));
             }
-            gc *= l;
+        }
+        for (int i = 0; i < N; ++i)
+        {
+            (*g[i])[c] *= l[i];
         }
     }
 }
