@@ -1,4 +1,5 @@
 #include "cellLimitedGauss.H"
+#include "cellLimiter.H"
 #include "surfaceFields.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -41,7 +42,6 @@ void Foam::cellLimitedGauss::gradFields
     const vectorField& Sf = mesh_.Sf().primitiveField();
     const scalarField& w = mesh_.weights().primitiveField();
     const vectorField& C = mesh_.C().primitiveField();
-    const vectorField& Cf = mesh_.Cf().primitiveField();
     const scalarField& V = mesh_.V();
     const label nCells = mesh_.nCells();
     const label nPatches = mesh_.boundary().size();
@@ -130,7 +130,7 @@ void Foam::cellLimitedGauss::gradFields
     // boundary values, then the Barth-Jespersen factor (minmod of r, as
     // cellLimitedGrad) over its faces, applied to the slope
     const cellList& cells = mesh_.cells();
-    const labelList& facePatch = mesh_.boundaryMesh().patchID();
+    const vectorField& xf = mesh_.faceCentres();
     const label nInternal = mesh_.nInternalFaces();
 
     for (label c = 0; c < nCells; ++c)
@@ -163,10 +163,8 @@ void Foam::cellLimitedGauss::gradFields
                 }
                 continue;
             }
-            const label patchi = facePatch[facei - nInternal];
-            const fvPatch& patch = mesh_.boundary()[patchi];
-            if (patch.size() == 0) continue;
-            const label j = facei - patch.start();
+            label patchi, j;
+            if (!boundaryFace(mesh_, facei, patchi, j)) continue;
             for (int i = 0; i < N; ++i)
             {
                 const fvPatchScalarField& pv = vf[i]->boundaryField()[patchi];
@@ -185,15 +183,12 @@ void Foam::cellLimitedGauss::gradFields
 
         for (const label facei : cFaces)
         {
-            const vector* xf = &Cf[facei];
-            if (facei >= nInternal)
+            label patchi, j;
+            if (facei >= nInternal && !boundaryFace(mesh_, facei, patchi, j))
             {
-                const label patchi = facePatch[facei - nInternal];
-                const fvPatch& patch = mesh_.boundary()[patchi];
-                if (patch.size() == 0) continue;
-                xf = &mesh_.Cf().boundaryField()[patchi][facei - patch.start()];
+                continue;
             }
-            const vector dx(*xf - C[c]);
+            const vector dx(xf[facei] - C[c]);
             for (int i = 0; i < N; ++i)
             {
                 const scalar extrapolate = dx & (*g[i])[c];

@@ -58,7 +58,6 @@ void Foam::cellLimiter::limit
     const vectorField& C = mesh_.cellCentres();
     const vectorField& Cf = mesh_.faceCentres();
     const cellList& cells = mesh_.cells();
-    const labelList& facePatch = mesh_.boundaryMesh().patchID();
     const label nInternal = mesh_.nInternalFaces();
     const Field<Type>& v = vf.primitiveField();
 
@@ -95,25 +94,16 @@ void Foam::cellLimiter::limit
                 vMin = min(vMin, vn);
                 continue;
             }
-            const label patchi = facePatch[facei - nInternal];
+            label patchi, i;
             if
             (
-                kinds_[patchi] == neighbour::none
-             || mesh_.boundary()[patchi].size() == 0
+                !boundaryFace(mesh_, facei, patchi, i)
+             || kinds_[patchi] == neighbour::none
             )
             {
                 continue;
             }
-            const Type vn
-            (
-                value
-                (
-                    patchi,
-                    facei - mesh_.boundaryMesh()[patchi].start(),
-                    vf,
-                    nbr[patchi]
-                )
-            );
+            const Type vn(value(patchi, i, vf, nbr[patchi]));
             vMax = max(vMax, vn);
             vMin = min(vMin, vn);
         }
@@ -123,18 +113,18 @@ void Foam::cellLimiter::limit
         Type l(pTraits<Type>::one);
         for (const label facei : cFaces)
         {
-            if (facei >= nInternal)
-            {
-                const label patchi = facePatch[facei - nInternal];
-                if
-                (
-                    kinds_[patchi] == neighbour::none
+            label patchi, i;
+            if
+            (
+                facei >= nInternal
+             && (
+                    !boundaryFace(mesh_, facei, patchi, i)
+                 || kinds_[patchi] == neighbour::none
                  || kinds_[patchi] == neighbour::wedge
-                 || mesh_.boundary()[patchi].size() == 0
                 )
-                {
-                    continue;
-                }
+            )
+            {
+                continue;
             }
             const Type dv(extrapolate(celli, Cf[facei] - C[celli]));
             for (direction cmpt = 0; cmpt < pTraits<Type>::nComponents; ++cmpt)
