@@ -148,7 +148,8 @@ int main(int argc, char *argv[])
             const scalarField& a = phases.alpha(j).primitiveField();
             const scalarField& rho = phases.rho(j).primitiveField();
             const scalarField& p = phases.p(j).primitiveField();
-            const tensorField& A = phases.A(j).primitiveField();
+            const tensorField* A =
+                ph.solid() ? &phases.A(j).primitiveField() : nullptr;
             const inelasticModel& inelastic = phases[j].inelastic();
             scalar carried[phaseModel::maxCarried];
             forAll(C, celli)
@@ -158,7 +159,7 @@ int main(int argc, char *argv[])
                 if (ph.solid())
                 {
                     elastic +=
-                        m*ph.elasticEnergy(foamEigen::toEigen(A[celli]));
+                        m*ph.elasticEnergy(foamEigen::toEigen((*A)[celli]));
                     phases[j].inelasticState(celli, carried);
                     plastic += m*inelastic.plasticWork(carried);
                 }

@@ -35,22 +35,21 @@ void Foam::cellStates::update()
         const hyperelasticPhase& ph = phase.law();
         const scalarField& rho = phase.rho().primitiveField();
         const scalarField& p = phase.p().primitiveField();
-        const tensorField& A = phase.A().primitiveField();
-
         const scalarField& alpha = phase.alpha().primitiveField();
         const phaseRegimes& regimes = phases_.regimes();
         const scalar cT2 = ph.cT2();
         const bool solid = ph.solid();
+        const tensorField* A = solid ? &phase.A().primitiveField() : nullptr;
 
         for (label celli = 0; celli < nCells; ++celli)
         {
-            // A fluid's stress is -p I (not stored), its cobasis the
-            // identity (phaseModel) and its wave speed c_h
+            // A fluid's stress is -p I (not stored), it has no cobasis
+            // (phaseModel) and its wave speed is c_h
             cobasis::matrix Ac;
             double e;
             if (solid)
             {
-                Ac = toEigen(A[celli]);
+                Ac = toEigen((*A)[celli]);
                 ph.sigmaAndE(rho[celli], p[celli], Ac, sigma_[k][celli], e);
             }
             else

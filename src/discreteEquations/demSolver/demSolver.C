@@ -292,18 +292,19 @@ void Foam::demSolver::newState(const scalar dt, conservedState& q) const
         q.mass[k].resize(nCells);
         q.momentum[k].resize(nCells);
         q.energy[k].resize(nCells);
-        q.A[k].resize(nCells);
         q.carried[k].resize(phases_[k].nCarried());
         for (auto& v : q.carried[k])
         {
             v.resize(nCells);
         }
 
+        // A fluid has no cobasis (phaseModel): its entry stays empty
         const bool solid = phases_.phase(k).solid();
+        q.A[k].resize(solid ? nCells : 0);
         const phaseRegimes& regimes = phases_.regimes();
         const scalarField& alpha = phases_.alpha(k).primitiveField();
         const scalarField& rho = phases_.rho(k).primitiveField();
-        const tensorField& A = phases_.A(k).primitiveField();
+        const tensorField* A = solid ? &phases_.A(k).primitiveField() : nullptr;
         const phaseModel& phase = phases_[k];
         const label nCarried = phase.nCarried();
 
@@ -343,23 +344,23 @@ void Foam::demSolver::newState(const scalar dt, conservedState& q) const
                 }
             }
 
-            const cobasis::matrix Ac(toEigen(A[c]));
-            if (solid && regimes.trace(q.alpha[k][c]))
+            if (!solid)
+            {
+                continue;
+            }
+            const cobasis::matrix Ac(toEigen((*A)[c]));
+            if (regimes.trace(q.alpha[k][c]))
             {
                 // A trace after the step: the relaxation resets its cobasis
                 // unstrained and pays its energy (mechanicalRelaxation::
                 // relaxTraces), so it is not transported
                 q.A[k][c] = Ac;
             }
-            else if (solid)
+            else
             {
                 // (the time-centred cobasis in the stretching term is the
                 // one the face loop advected against)
                 q.A[k][c] = cobasis_.update(k, c, dt, V[c], Ac);
-            }
-            else
-            {
-                q.A[k][c] = Ac;
             }
         }
     }

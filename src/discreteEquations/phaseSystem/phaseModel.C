@@ -10,15 +10,6 @@ void Foam::phaseModel::initCobasis(const bool readA)
     tensorField& A = A_->primitiveFieldRef();
     const scalarField& rho = rho_.primitiveField();
 
-    if (!law_.solid())
-    {
-        // Carried unchanged from here on, boundary values included
-        // (correctBoundaryConditions leaves a fluid's A alone)
-        A = tensor::I;
-        A_->correctBoundaryConditions();
-        return;
-    }
-
     const scalar rho0 = law_.rho0();
     forAll(A, celli)
     {
@@ -170,33 +161,37 @@ Foam::phaseModel::phaseModel
         );
     }
 
-    IOobject AIO
-    (
-        "A." + name,
-        timeName,
-        mesh,
-        IOobject::MUST_READ,
-        law_.solid() ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
-    );
-    const bool readA =
-        law_.solid() && AIO.typeHeaderOk<volTensorField>(true);
-    if (readA)
+    // A fluid carries no cobasis (its stress is -p I)
+    bool readA = false;
+    if (law_.solid())
     {
-        A_.reset(new volTensorField(AIO, mesh));
-    }
-    else
-    {
-        AIO.readOpt() = IOobject::NO_READ;
-        A_.reset
+        IOobject AIO
         (
-            new volTensorField
-            (
-                AIO,
-                mesh,
-                dimensionedTensor("I", dimless, tensor::I),
-                mirrorTypes
-            )
+            "A." + name,
+            timeName,
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::AUTO_WRITE
         );
+        readA = AIO.typeHeaderOk<volTensorField>(true);
+        if (readA)
+        {
+            A_.reset(new volTensorField(AIO, mesh));
+        }
+        else
+        {
+            AIO.readOpt() = IOobject::NO_READ;
+            A_.reset
+            (
+                new volTensorField
+                (
+                    AIO,
+                    mesh,
+                    dimensionedTensor("I", dimless, tensor::I),
+                    mirrorTypes
+                )
+            );
+        }
     }
 
     // Carried variables: those of the inelastic model, then the passive
@@ -258,7 +253,10 @@ Foam::phaseModel::phaseModel
         }
     }
     checkInitialState();
-    initCobasis(readA);
+    if (law_.solid())
+    {
+        initCobasis(readA);
+    }
 }
 
 
@@ -283,8 +281,6 @@ void Foam::phaseModel::correctBoundaryConditions()
     rho_.correctBoundaryConditions();
     p_->correctBoundaryConditions();
 
-    // A fluid's cobasis is carried unchanged (its stress is -p I): its
-    // boundary values stay those of the start
     if (solid())
     {
         A_->correctBoundaryConditions();

@@ -323,15 +323,16 @@ void Foam::phaseSystem::correctOutputs()
         const hyperelasticPhase& ph = phases_[k].law();
         const scalarField& a = phases_[k].alpha().primitiveField();
         const scalarField& p = phases_[k].p().primitiveField();
-        const tensorField& A = phases_[k].A().primitiveField();
+        const tensorField* A =
+            ph.solid() ? &phases_[k].A().primitiveField() : nullptr;
 
         forAll(a, celli)
         {
             pM[celli] += a[celli]*p[celli];
             sigma[celli] -= a[celli]*p[celli]*symmTensor::I;
-            if (ph.solid())
+            if (A)
             {
-                const cobasis::matrix S(ph.S(foamEigen::toEigen(A[celli])));
+                const cobasis::matrix S(ph.S(foamEigen::toEigen((*A)[celli])));
                 sigma[celli] += a[celli]*symmTensor
                 (
                     S(0, 0), S(0, 1), S(0, 2),
@@ -384,13 +385,15 @@ Foam::Pair<Foam::scalar> Foam::phaseSystem::totals() const
         const scalarField& alpha = this->alpha(k).primitiveField();
         const scalarField& rho = this->rho(k).primitiveField();
         const scalarField& p = this->p(k).primitiveField();
-        const tensorField& A = this->A(k).primitiveField();
+        const tensorField* A =
+            ph.solid() ? &this->A(k).primitiveField() : nullptr;
         forAll(V, c)
         {
             const scalar m = alpha[c]*rho[c]*V[c];
             mass += m;
-            energy +=
-                m*(ph.e(rho[c], p[c], toEigen(A[c])) + 0.5*magSqr(U[c]));
+            const scalar e =
+                A ? ph.e(rho[c], p[c], toEigen((*A)[c])) : ph.eos().e(rho[c], p[c]);
+            energy += m*(e + 0.5*magSqr(U[c]));
         }
     }
     return Pair<scalar>

@@ -69,15 +69,16 @@ void Foam::mechanicalRelaxation::relaxVelocity
     {
         const hyperelasticPhase& ph = phases_.phase(k);
         cell_.v[k] = cell_.alpha[k]/cell_.m[k];
-        cobasis::matrix& A = q.A[k][c];
 
         // A solid trace is reset unstrained by relaxTraces, which pays the
         // change of its whole energy: its cobasis is not made compatible
         // and no elastic energy is split off here (the same payment up to
         // round-off)
         const bool reset = ph.solid() && cell_.trace[k];
+        cell_.ee[k] = 0;
         if (ph.solid() && !reset)
         {
+            cobasis::matrix& A = q.A[k][c];
             const scalar detA = A.determinant();
             if (!(detA > 0))
             {
@@ -93,11 +94,11 @@ void Foam::mechanicalRelaxation::relaxVelocity
             {
                 A *= std::cbrt(1/(cell_.v[k]*ph.rho0()*detA));
             }
+            cell_.ee[k] = ph.elasticEnergy(A);
         }
         // Own kinetic energy out, the share of the dissipated kinetic
         // energy 1/2 |u_k - u|^2 in: e_k never decreases
         const cobasis::vector uk(q.momentum[k][c]/cell_.m[k]);
-        cell_.ee[k] = reset ? 0 : ph.elasticEnergy(A);
         cell_.e[k] =
             q.energy[k][c]/cell_.m[k] - 0.5*uk.squaredNorm()
           + 0.5*(uk - u).squaredNorm() - cell_.ee[k];
@@ -148,8 +149,6 @@ void Foam::mechanicalRelaxation::checkAndStore
     for (label k = 0; k < nPhases_; ++k)
     {
         const hyperelasticPhase& ph = phases_.phase(k);
-        const cobasis::matrix& A = q.A[k][c];
-
         const scalar rho = 1/cell_.v[k];
 
         // No pressure outside the density range (a Mie-Grueneisen phase
@@ -170,16 +169,19 @@ void Foam::mechanicalRelaxation::checkAndStore
                 checks_.fail(c, k, "p", p);
             }
             if (!(cell_.alpha[k] <= 1)) checks_.fail(c, k, "alpha", cell_.alpha[k]);
-            if (ph.solid() && !(A.determinant() > 0))
+            if (ph.solid() && !(q.A[k][c].determinant() > 0))
             {
-                checks_.fail(c, k, "det(A)", A.determinant());
+                checks_.fail(c, k, "det(A)", q.A[k][c].determinant());
             }
         }
 
         phases_.alpha(k)[c] = cell_.alpha[k];
         phases_.rho(k)[c] = rho;
         phases_.p(k)[c] = p;
-        phases_.A(k)[c] = toTensor(A);
+        if (ph.solid())
+        {
+            phases_.A(k)[c] = toTensor(q.A[k][c]);
+        }
     }
 }
 

@@ -68,9 +68,9 @@ void Foam::functionObjects::energyBudget::values(DynamicList<scalar>& row)
         const scalarField& alpha = phases.alpha(k).primitiveField();
         const scalarField& rho = phases.rho(k).primitiveField();
         const scalarField& p = phases.p(k).primitiveField();
-        const tensorField& A = phases.A(k).primitiveField();
-        const inelasticModel& inelastic = phases[k].inelastic();
         const bool solid = ph.solid();
+        const tensorField* A = solid ? &phases.A(k).primitiveField() : nullptr;
+        const inelasticModel& inelastic = phases[k].inelastic();
         scalar* s = &sums[4*k];
         forAll(V, c)
         {
@@ -79,7 +79,7 @@ void Foam::functionObjects::energyBudget::values(DynamicList<scalar>& row)
             s[1] += m*ph.eos().e(rho[c], p[c]);
             if (solid)
             {
-                s[2] += m*ph.elasticEnergy(foamEigen::toEigen(A[c]));
+                s[2] += m*ph.elasticEnergy(foamEigen::toEigen((*A)[c]));
                 phases[k].inelasticState(c, carried);
                 s[3] += m*inelastic.plasticWork(carried);
             }

@@ -192,7 +192,7 @@ void Foam::reconstructions::MUSCLHancock::setCellSlopes
     const scalarField& rho = phases_.rho(k).primitiveField();
     const scalarField& p = phases_.p(k).primitiveField();
     const vectorField& U = phases_.U().primitiveField();
-    const tensorField& A = phases_.A(k).primitiveField();
+    const tensorField* A = solid ? &phases_.A(k).primitiveField() : nullptr;
 
     alphaProfile_->beginPhase(k);
     forAll(alpha, c)
@@ -236,7 +236,8 @@ void Foam::reconstructions::MUSCLHancock::setCellSlopes
         sl.gP = toEigen(gP_[c]);
         predictor_.predict
         (
-            k, c, halfDt, rho[c], p[c], U[c], A[c], gradU_[c], a, sl, so
+            k, c, halfDt, rho[c], p[c], U[c], A ? (*A)[c] : tensor::I,
+            gradU_[c], a, sl, so
         );
     }
 }
@@ -413,8 +414,8 @@ void Foam::reconstructions::MUSCLHancock::faceState
         }
         else
         {
-            // A fluid's cobasis is the identity, carried along unused (its
-            // stress is -p I; phaseModel)
+            // A fluid has no cobasis (its stress is -p I; phaseModel): its
+            // side takes the identity, unused
             sk.A.setIdentity();
         }
 
@@ -460,7 +461,16 @@ void Foam::reconstructions::MUSCLHancock::centreState
         sk.rho = phases_.rho(k)[celli];
         sk.p = phases_.p(k)[celli];
         sk.U = toEigen(Uc);
-        sk.A = toEigen(phases_.A(k)[celli]);
+        const hyperelasticPhase& ph = phases_.phase(k);
+        if (ph.solid())
+        {
+            sk.A = toEigen(phases_.A(k)[celli]);
+        }
+        else
+        {
+            // A fluid has no cobasis (phaseModel): its side takes the identity
+            sk.A.setIdentity();
+        }
         sk.a = cells_.a(k, celli);
         cellCarried(k, celli, sk);
 
@@ -470,7 +480,6 @@ void Foam::reconstructions::MUSCLHancock::centreState
             sk.alpha = min(max(sk.alpha + sl.alpha.dt, 0.0), 1.0);
         }
 
-        const hyperelasticPhase& ph = phases_.phase(k);
         const double rho = sk.rho + sl.dtRho;
         const double p = sk.p + sl.dtP;
         const cobasis::matrix A

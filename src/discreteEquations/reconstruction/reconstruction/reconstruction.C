@@ -95,7 +95,7 @@ void Foam::reconstruction::cellSide
     }
     else
     {
-        // A fluid's cobasis is the identity (phaseModel)
+        // A fluid has no cobasis (phaseModel): its side takes the identity
         s.A.setIdentity();
     }
     cellCarried(k, celli, s);
