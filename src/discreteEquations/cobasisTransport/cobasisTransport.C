@@ -25,7 +25,8 @@ Foam::cobasisTransport::cobasisTransport
     keepRotation_(false),
     L_(nPhases_),
     advection_(nPhases_),
-    Ahalf_(nPhases_)
+    A_(nPhases_, nullptr),
+    rec_(nullptr)
 {
     enum class rotation { discard, keep };
     static const Enum<rotation> names
@@ -48,7 +49,6 @@ Foam::cobasisTransport::cobasisTransport
         {
             L_[k].resize(nCells);
             advection_[k].resize(nCells);
-            Ahalf_[k].resize(nCells);
         }
     }
 }
@@ -58,6 +58,7 @@ Foam::cobasisTransport::cobasisTransport
 
 void Foam::cobasisTransport::reset(const reconstruction& rec)
 {
+    rec_ = &rec;
     for (label k = 0; k < nPhases_; ++k)
     {
         for (cobasis::matrix& L : L_[k])
@@ -68,16 +69,9 @@ void Foam::cobasisTransport::reset(const reconstruction& rec)
         {
             a.setZero();
         }
-        if (!phases_.phase(k).solid())
+        if (phases_.phase(k).solid())
         {
-            continue;
-        }
-        // Once per cell, not at each of its faces
-        const tensorField& A = phases_.A(k).primitiveField();
-        std::vector<cobasis::matrix>& Ahalf = Ahalf_[k];
-        forAll(A, c)
-        {
-            Ahalf[c] = toEigen(A[c]) + rec.dtA(k, c);
+            A_[k] = &phases_.A(k).primitiveField();
         }
     }
 }
@@ -111,7 +105,7 @@ void Foam::cobasisTransport::addFace
         {
             continue;
         }
-        const cobasis::matrix& Ac = Ahalf_[k][c];
+        const cobasis::matrix Ac(Ahalf(k, c));
         if (Q)
         {
             advection_[k][c] += flux*(up.A*Q->transpose() - Ac);
@@ -136,7 +130,7 @@ Foam::cobasis::matrix Foam::cobasisTransport::update
     const scalar dtByV = dt/V;
     cobasis::matrix Anew
     (
-        A - dtByV*advection_[k][c] - dt*(Ahalf_[k][c]*L_[k][c])/V
+        A - dtByV*advection_[k][c] - dt*(Ahalf(k, c)*L_[k][c])/V
     );
 
     // Stored without rotation (an inverted cobasis is left for the
