@@ -1,11 +1,10 @@
 #include "voidVelocity.H"
+#include "cellLimiter.H"
 
 Foam::voidVelocity::voidVelocity(phaseSystem& phases)
 :
     phases_(phases),
     isVoid_(phases.mesh().nCells(), false),
-    lo_(phases.mesh().nCells()),
-    hi_(phases.mesh().nCells()),
     nCells_(0),
     energy_(0)
 {}
@@ -45,49 +44,57 @@ void Foam::voidVelocity::correct()
         return;
     }
 
-    // Bounds from the face neighbours' velocities of the last good state
+    // Per void cell, over its faces: the bounds of the face neighbours'
+    // velocities of the last good state (component by component; min and
+    // max do not depend on the order of the faces). Processor neighbours:
+    // U's patch values, those of the step's start (the boundary values are
+    // updated after this)
     const vectorField& U0 = phases_.savedU();
     const labelUList& own = mesh.owner();
     const labelUList& nei = mesh.neighbour();
-    lo_ = vector::uniform(GREAT);
-    hi_ = vector::uniform(-GREAT);
-    const auto widen = [this](const label c, const vector& u)
-    {
-        lo_[c] = min(lo_[c], u);
-        hi_[c] = max(hi_[c], u);
-    };
-    forAll(nei, facei)
-    {
-        if (isVoid[own[facei]]) widen(own[facei], U0[nei[facei]]);
-        if (isVoid[nei[facei]]) widen(nei[facei], U0[own[facei]]);
-    }
+    const label nInternal = mesh.nInternalFaces();
+    const cellList& cells = mesh.cells();
     const volVectorField& U = phases_.U();
-    forAll(mesh.boundary(), patchi)
-    {
-        if (phases_.boundary()[patchi] != boundaryKinds::kind::coupled)
-        {
-            continue;
-        }
-        // A processor patch's values are the cells across (those of the
-        // step's start: the boundary values are updated after this)
-        const labelUList& fc = mesh.boundary()[patchi].faceCells();
-        const fvPatchVectorField& Up = U.boundaryField()[patchi];
-        forAll(fc, i)
-        {
-            if (isVoid[fc[i]]) widen(fc[i], Up[i]);
-        }
-    }
-
-    // Hold the velocity in the bounds; book the kinetic energy change
     vectorField& u = phases_.U().primitiveFieldRef();
     const scalarField& V = mesh.V();
     for (label c = 0; c < nCells; ++c)
     {
-        if (!isVoid[c] || !(lo_[c].x() <= hi_[c].x()))
+        if (!isVoid[c])
         {
             continue;
         }
-        const vector uNew(max(min(u[c], hi_[c]), lo_[c]));
+        vector lo(vector::uniform(GREAT));
+        vector hi(vector::uniform(-GREAT));
+        for (const label facei : cells[c])
+        {
+            vector un;
+            if (facei < nInternal)
+            {
+                un = U0[own[facei] == c ? nei[facei] : own[facei]];
+            }
+            else
+            {
+                label patchi, i;
+                if
+                (
+                    !boundaryFace(mesh, facei, patchi, i)
+                 || phases_.boundary()[patchi] != boundaryKinds::kind::coupled
+                )
+                {
+                    continue;
+                }
+                un = U.boundaryField()[patchi][i];
+            }
+            lo = min(lo, un);
+            hi = max(hi, un);
+        }
+
+        // Hold the velocity in the bounds; book the kinetic energy change
+        if (!(lo.x() <= hi.x()))
+        {
+            continue;
+        }
+        const vector uNew(max(min(u[c], hi), lo));
         if (uNew != u[c])
         {
             scalar m = 0;
@@ -101,3 +108,5 @@ void Foam::voidVelocity::correct()
         }
     }
 }
+
+

@@ -10,7 +10,7 @@ Foam::bodyForces::bodyForces(const fvMesh& mesh)
 :
     mesh_(mesh),
     accelerations_(),
-    acceleration_(mesh.nCells(), Zero)
+    acceleration_()
 {
     const Time& runTime = mesh.time();
 
@@ -73,6 +73,12 @@ Foam::bodyForces::bodyForces(const fvMesh& mesh)
     {
         Info<< "Body acceleration " << acc.name() << " ("
             << acc.type() << ")" << nl;
+    }
+
+    // Per cell only when there are accelerations
+    if (active())
+    {
+        acceleration_.setSize(mesh.nCells(), Zero);
     }
 }
 
