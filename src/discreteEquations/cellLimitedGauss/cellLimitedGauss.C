@@ -132,6 +132,20 @@ void Foam::cellLimitedGauss::gradFields
     const cellList& cells = mesh_.cells();
     const vectorField& xf = mesh_.faceCentres();
     const label nInternal = mesh_.nInternalFaces();
+    const boundaryFaceTable boundaryFace(mesh_);
+
+    // Per field and patch, the neighbour values a boundary face gives:
+    // the processor neighbour's, or the patch value
+    List<const scalarField*> bv[N];
+    for (int i = 0; i < N; ++i)
+    {
+        bv[i].setSize(nPatches);
+        for (label patchi = 0; patchi < nPatches; ++patchi)
+        {
+            const fvPatchScalarField& pv = vf[i]->boundaryField()[patchi];
+            bv[i][patchi] = pv.coupled() ? &nbr[i][patchi] : &pv;
+        }
+    }
 
     for (label c = 0; c < nCells; ++c)
     {
@@ -164,11 +178,10 @@ void Foam::cellLimitedGauss::gradFields
                 continue;
             }
             label patchi, j;
-            if (!boundaryFace(mesh_, facei, patchi, j)) continue;
+            if (!boundaryFace(facei, patchi, j)) continue;
             for (int i = 0; i < N; ++i)
             {
-                const fvPatchScalarField& pv = vf[i]->boundaryField()[patchi];
-                const scalar vn = pv.coupled() ? nbr[i][patchi][j] : pv[j];
+                const scalar vn = (*bv[i][patchi])[j];
                 vMax[i] = max(vMax[i], vn);
                 vMin[i] = min(vMin[i], vn);
             }
@@ -184,7 +197,7 @@ void Foam::cellLimitedGauss::gradFields
         for (const label facei : cFaces)
         {
             label patchi, j;
-            if (facei >= nInternal && !boundaryFace(mesh_, facei, patchi, j))
+            if (facei >= nInternal && !boundaryFace(facei, patchi, j))
             {
                 continue;
             }

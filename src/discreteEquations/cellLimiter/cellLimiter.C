@@ -10,8 +10,21 @@ Foam::cellLimiter::cellLimiter
 )
 :
     mesh_(mesh),
-    kinds_(kinds)
-{}
+    kinds_(kinds),
+    wedgeT_(kinds.size(), tensor::I)
+{
+    forAll(kinds_, patchi)
+    {
+        if (kinds_[patchi] == neighbour::wedge)
+        {
+            wedgeT_[patchi] =
+                refCast<const wedgePolyPatch>
+                (
+                    mesh.boundary()[patchi].patch()
+                ).cellT();
+        }
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -36,9 +49,7 @@ Foam::vector Foam::cellLimiter::offset
         }
         case neighbour::wedge:
         {
-            const tensor& T =
-                refCast<const wedgePolyPatch>(patch.patch()).cellT();
-            return (T & Cc) - Cc;
+            return (wedgeT_[patchi] & Cc) - Cc;
         }
         case neighbour::coupled:
         {

@@ -26,11 +26,7 @@ Type Foam::cellLimiter::value
         }
         case neighbour::wedge:
         {
-            return transform
-            (
-                refCast<const wedgePolyPatch>(patch.patch()).cellT(),
-                vc
-            );
+            return transform(wedgeT_[patchi], vc);
         }
         case neighbour::coupled:
         {
@@ -60,6 +56,7 @@ void Foam::cellLimiter::limit
     const cellList& cells = mesh_.cells();
     const label nInternal = mesh_.nInternalFaces();
     const Field<Type>& v = vf.primitiveField();
+    const boundaryFaceTable boundaryFace(mesh_);
 
     // The neighbouring processors' values, patch by patch
     List<Field<Type>> nbr(kinds_.size());
@@ -97,7 +94,7 @@ void Foam::cellLimiter::limit
             label patchi, i;
             if
             (
-                !boundaryFace(mesh_, facei, patchi, i)
+                !boundaryFace(facei, patchi, i)
              || kinds_[patchi] == neighbour::none
             )
             {
@@ -118,7 +115,7 @@ void Foam::cellLimiter::limit
             (
                 facei >= nInternal
              && (
-                    !boundaryFace(mesh_, facei, patchi, i)
+                    !boundaryFace(facei, patchi, i)
                  || kinds_[patchi] == neighbour::none
                  || kinds_[patchi] == neighbour::wedge
                 )

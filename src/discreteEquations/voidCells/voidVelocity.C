@@ -54,6 +54,7 @@ void Foam::voidVelocity::correct()
     const labelUList& nei = mesh.neighbour();
     const label nInternal = mesh.nInternalFaces();
     const cellList& cells = mesh.cells();
+    const boundaryFaceTable boundaryFace(mesh);
     const volVectorField& U = phases_.U();
     vectorField& u = phases_.U().primitiveFieldRef();
     const scalarField& V = mesh.V();
@@ -77,7 +78,7 @@ void Foam::voidVelocity::correct()
                 label patchi, i;
                 if
                 (
-                    !boundaryFace(mesh, facei, patchi, i)
+                    !boundaryFace(facei, patchi, i)
                  || phases_.boundary()[patchi] != boundaryKinds::kind::coupled
                 )
                 {
