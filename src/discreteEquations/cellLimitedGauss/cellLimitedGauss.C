@@ -1,5 +1,5 @@
 #include "cellLimitedGauss.H"
-#include "cellLimiter.H"
+#include "boundaryFaceTable.H"
 #include "surfaceFields.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

@@ -1,5 +1,5 @@
 #include "voidVelocity.H"
-#include "cellLimiter.H"
+#include "boundaryFaceTable.H"
 
 Foam::voidVelocity::voidVelocity(phaseSystem& phases)
 :
@@ -109,5 +109,3 @@ void Foam::voidVelocity::correct()
         }
     }
 }
-
-

@@ -461,16 +461,7 @@ void Foam::reconstructions::MUSCLHancock::centreState
         sk.rho = phases_.rho(k)[celli];
         sk.p = phases_.p(k)[celli];
         sk.U = toEigen(Uc);
-        const hyperelasticPhase& ph = phases_.phase(k);
-        if (ph.solid())
-        {
-            sk.A = toEigen(phases_.A(k)[celli]);
-        }
-        else
-        {
-            // A fluid has no cobasis (phaseModel): its side takes the identity
-            sk.A.setIdentity();
-        }
+        sk.A = cellCobasis(k, celli);
         sk.a = cells_.a(k, celli);
         cellCarried(k, celli, sk);
 
@@ -480,6 +471,7 @@ void Foam::reconstructions::MUSCLHancock::centreState
             sk.alpha = min(max(sk.alpha + sl.alpha.dt, 0.0), 1.0);
         }
 
+        const hyperelasticPhase& ph = phases_.phase(k);
         const double rho = sk.rho + sl.dtRho;
         const double p = sk.p + sl.dtP;
         const cobasis::matrix A

@@ -89,15 +89,7 @@ void Foam::reconstruction::cellSide
     s.rho = phases_.rho(k)[celli];
     s.p = phases_.p(k)[celli];
     s.U = U;
-    if (ph.solid())
-    {
-        s.A = toEigen(phases_.A(k)[celli]);
-    }
-    else
-    {
-        // A fluid has no cobasis (phaseModel): its side takes the identity
-        s.A.setIdentity();
-    }
+    s.A = cellCobasis(k, celli);
     cellCarried(k, celli, s);
     if (ph.solid())
     {
