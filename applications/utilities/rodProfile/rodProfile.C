@@ -148,8 +148,7 @@ int main(int argc, char *argv[])
             const scalarField& a = phases.alpha(j).primitiveField();
             const scalarField& rho = phases.rho(j).primitiveField();
             const scalarField& p = phases.p(j).primitiveField();
-            const tensorField* A =
-                ph.solid() ? &phases.A(j).primitiveField() : nullptr;
+            const tensorField* A = phases.cellCobasis(j);
             const inelasticModel& inelastic = phases[j].inelastic();
             scalar carried[phaseModel::maxCarried];
             forAll(C, celli)

@@ -39,7 +39,7 @@ void Foam::cellStates::update()
         const phaseRegimes& regimes = phases_.regimes();
         const scalar cT2 = ph.cT2();
         const bool solid = ph.solid();
-        const tensorField* A = solid ? &phase.A().primitiveField() : nullptr;
+        const tensorField* A = phase.cellCobasis();
 
         for (label celli = 0; celli < nCells; ++celli)
         {

@@ -304,7 +304,7 @@ void Foam::demSolver::newState(const scalar dt, conservedState& q) const
         const phaseRegimes& regimes = phases_.regimes();
         const scalarField& alpha = phases_.alpha(k).primitiveField();
         const scalarField& rho = phases_.rho(k).primitiveField();
-        const tensorField* A = solid ? &phases_.A(k).primitiveField() : nullptr;
+        const tensorField* A = phases_.cellCobasis(k);
         const phaseModel& phase = phases_[k];
         const label nCarried = phase.nCarried();
 

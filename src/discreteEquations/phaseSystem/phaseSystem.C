@@ -323,8 +323,7 @@ void Foam::phaseSystem::correctOutputs()
         const hyperelasticPhase& ph = phases_[k].law();
         const scalarField& a = phases_[k].alpha().primitiveField();
         const scalarField& p = phases_[k].p().primitiveField();
-        const tensorField* A =
-            ph.solid() ? &phases_[k].A().primitiveField() : nullptr;
+        const tensorField* A = phases_[k].cellCobasis();
 
         forAll(a, celli)
         {
@@ -385,8 +384,7 @@ Foam::Pair<Foam::scalar> Foam::phaseSystem::totals() const
         const scalarField& alpha = this->alpha(k).primitiveField();
         const scalarField& rho = this->rho(k).primitiveField();
         const scalarField& p = this->p(k).primitiveField();
-        const tensorField* A =
-            ph.solid() ? &this->A(k).primitiveField() : nullptr;
+        const tensorField* A = cellCobasis(k);
         forAll(V, c)
         {
             const scalar m = alpha[c]*rho[c]*V[c];

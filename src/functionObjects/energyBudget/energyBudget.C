@@ -69,7 +69,7 @@ void Foam::functionObjects::energyBudget::values(DynamicList<scalar>& row)
         const scalarField& rho = phases.rho(k).primitiveField();
         const scalarField& p = phases.p(k).primitiveField();
         const bool solid = ph.solid();
-        const tensorField* A = solid ? &phases.A(k).primitiveField() : nullptr;
+        const tensorField* A = phases.cellCobasis(k);
         const inelasticModel& inelastic = phases[k].inelastic();
         scalar* s = &sums[4*k];
         forAll(V, c)

@@ -192,7 +192,7 @@ void Foam::reconstructions::MUSCLHancock::setCellSlopes
     const scalarField& rho = phases_.rho(k).primitiveField();
     const scalarField& p = phases_.p(k).primitiveField();
     const vectorField& U = phases_.U().primitiveField();
-    const tensorField* A = solid ? &phases_.A(k).primitiveField() : nullptr;
+    const tensorField* A = phases_.cellCobasis(k);
 
     alphaProfile_->beginPhase(k);
     forAll(alpha, c)
@@ -403,13 +403,12 @@ void Foam::reconstructions::MUSCLHancock::faceState
         sk.rho = rhoc + sl.gRho.dot(de) + sl.dtRho;
         sk.p = pc + sl.gP.dot(de) + sl.dtP;
         sk.U = toEigen(Uc) + toEigen(gradU_[celli]).transpose()*de + sl.dtU;
-        cobasis::matrix Ac;
         if (ph.solid())
         {
-            Ac = toEigen(phases_.A(k)[celli]);
             const solidSlopes& so = solidSlopes_[k][celli];
             sk.A =
-                Ac + de(0)*so.gA[0] + de(1)*so.gA[1] + de(2)*so.gA[2]
+                toEigen(phases_.A(k)[celli])
+              + de(0)*so.gA[0] + de(1)*so.gA[1] + de(2)*so.gA[2]
               + so.dtA;
         }
         else
@@ -431,7 +430,7 @@ void Foam::reconstructions::MUSCLHancock::faceState
             sk.U = toEigen(Uc);
             if (ph.solid())
             {
-                sk.A = Ac;
+                sk.A = toEigen(phases_.A(k)[celli]);
             }
         }
         completeSide(k, sk);
