@@ -97,21 +97,22 @@ int main(int argc, char *argv[])
 
     while (runTime.run())
     {
-        dem.prepare();
-        const scalar dt = step.advance();
-
-        if (forces.active())
-        {
-            dem.setAcceleration(forces.update(runTime.value() - 0.5*dt));
-        }
-
         // The hyperbolic step and the relaxation, repeated with the failing
-        // cells at first order; rejected (false): retried with a shorter
-        // time step
-        if (!step.take(dt))
+        // cells at first order; rejected (false): retried from the same
+        // state with a shorter time step. The retries stay inside this
+        // loop: the function objects (runTime.run()) see accepted steps
+        // only, and nothing is written at the time a rejected step left
+        scalar dt = 0;
+        do
         {
-            continue;
-        }
+            dem.prepare();
+            dt = step.advance();
+
+            if (forces.active())
+            {
+                dem.setAcceleration(forces.update(runTime.value() - 0.5*dt));
+            }
+        } while (!step.take(dt));
 
         // Void cells (no phase counts) keep a velocity in their neighbours'
         // range (docs/numerics.md 9.11)
