@@ -115,6 +115,13 @@ TEST(phaseRegimes, metalDust)
         regimes("dustDensityRatio 0.5;")
        .unresolved(0, a, mDense, mDense + 0.5)
     );
+    // The default ratio, 0.8: copper at 0.75 rho0 is dust, at 0.85 rho0 not
+    const phaseRegimes byDefault(regimes(""));
+    EXPECT_TRUE(byDefault.unresolved(0, a, a*0.75*rho0Cu, a*0.75*rho0Cu + 0.5));
+    EXPECT_FALSE
+    (
+        byDefault.unresolved(0, a, a*0.85*rho0Cu, a*0.85*rho0Cu + 0.5)
+    );
     // A fluid is never dust (its dust density is 0)
     EXPECT_FALSE
     (

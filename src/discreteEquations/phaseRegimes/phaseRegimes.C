@@ -52,7 +52,7 @@ Foam::phaseRegimes::phaseRegimes(const dictionary& dict)
     alphaMinor_(get(dict, "alphaMinor", 1e-3)),
     massFractionMinor_(get(dict, "massFractionMinor", 1e-6)),
     gasTraceRatio_(get(dict, "gasTraceRatio", 1)),
-    dustDensityRatio_(get(dict, "dustDensityRatio", 0.5)),
+    dustDensityRatio_(get(dict, "dustDensityRatio", 0.8)),
     pVacuum_(get(dict, "pVacuum", 1))
 {
     for (const Pair<word>& removed : removedKeywords)
