@@ -72,14 +72,13 @@ def run_bar(name, speed, end, write, ratio, check=True):
 
 
 def rod_shape(case):
-    """(length, impact-face radius) in m from the last line of
-    log.rodProfile, or None"""
-    try:
-        text = open(os.path.join(case, "log.rodProfile")).read()
-    except OSError:
+    """(length, impact-face radius) in m at the last time of rodProfile's
+    table, or None"""
+    path = os.path.join(case, "postProcessing", "rodProfile", "copper.csv")
+    if not os.path.isfile(path):
         return None
-    m = re.findall(r"length (\S+), max radius \S+, face radius (\S+),", text)
-    return (float(m[-1][0]), float(m[-1][1])) if m else None
+    d = np.atleast_1d(np.genfromtxt(path, delimiter=",", names=True))
+    return (float(d["length"][-1]), float(d["faceRadius"][-1]))
 
 
 def log_summary(case):

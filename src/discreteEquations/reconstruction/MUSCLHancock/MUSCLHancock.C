@@ -428,10 +428,7 @@ void Foam::reconstructions::MUSCLHancock::faceState
             sk.rho = rhoc;
             sk.p = pc;
             sk.U = toEigen(Uc);
-            if (ph.solid())
-            {
-                sk.A = toEigen(phases_.A(k)[celli]);
-            }
+            sk.A = cellCobasis(k, celli);
         }
         completeSide(k, sk);
 
