@@ -1,5 +1,6 @@
 #include "demSolver.H"
 #include "faceFrame.H"
+#include "surfaceFields.H"
 #include "wedgePolyPatch.H"
 #include "foamEigen.H"
 #include "keywordCheck.H"
@@ -18,10 +19,8 @@ Foam::demSolver::demSolver
     phases_(phases),
     mesh_(phases.mesh()),
     nPhases_(phases.size()),
-    magSf_(mag(mesh_.faceAreas())),
-    boundaryOffset_(mesh_.nFaces() - mesh_.nInternalFaces()),
     cells_(phases),
-    timeStep_(phases, magSf_),
+    timeStep_(phases),
     reconstruction_(reconstruction::New(phases, cells_, schemeDict)),
     boundaryStates_(phases),
     assembly_(phases, schemeDict),
@@ -31,12 +30,10 @@ Foam::demSolver::demSolver
     faceN_(nPhases_),
     ghost_(nPhases_),
     fallback_(phases, schemeDict),
-    wedges_(mesh_, phases.boundary(), magSf_, schemeDict),
+    wedges_(mesh_, phases.boundary(), schemeDict),
     patchForces_(mesh_.boundary().size(), Zero)
 {
     reconstruction_->setFirstOrderCells(&fallback_.cells());
-
-    setOffsets();
 
     // Each part lists the entries it reads
     wordList valid(reconstruction_->keywords());
@@ -56,41 +53,12 @@ Foam::demSolver::demSolver
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::demSolver::setOffsets()
-{
-    const vectorField& Cf = mesh_.faceCentres();
-    const vectorField& C = mesh_.cellCentres();
-
-    const boundaryKinds& kinds = phases_.boundary();
-    const label nInternal = mesh_.nInternalFaces();
-    forAll(mesh_.boundary(), patchi)
-    {
-        const fvPatch& patch = mesh_.boundary()[patchi];
-        const labelUList& fc = patch.faceCells();
-        tensor Tinv(tensor::I);
-        const bool wedge = (kinds[patchi] == boundaryKinds::kind::wedge);
-        if (wedge)
-        {
-            Tinv =
-                refCast<const wedgePolyPatch>(patch.patch()).faceT().T();
-        }
-        forAll(fc, i)
-        {
-            const label facei = patch.start() + i;
-            boundaryOffset_[facei - nInternal] =
-                wedge
-              ? vector((Tinv & Cf[facei]) - C[fc[i]])
-              : vector(Cf[facei] - C[fc[i]]);
-        }
-    }
-}
-
-
 void Foam::demSolver::internalFaces()
 {
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
     const vectorField& Sf = mesh_.faceAreas();
+    const scalarField& magSf = mesh_.magSf();
     const vectorField& Cf = mesh_.faceCentres();
     const vectorField& C = mesh_.cellCentres();
     const reconstruction& rec = reconstruction_();
@@ -114,19 +82,22 @@ void Foam::demSolver::internalFaces()
             rec.faceState(nb, facei, Cf[facei] - C[nb], faceN_);
         }
 
-        assembly_.solveFace(faceO_, faceN_, frame(facei), fallback);
+        assembly_.solveFace
+        (
+            faceO_, faceN_, frame(facei, magSf[facei]), fallback
+        );
 
         const cobasis::vector S(toEigen(Sf[facei]));
-        assembly_.addToCell(o, 0, magSf_[facei]);
-        assembly_.addToCell(nb, 1, magSf_[facei]);
+        assembly_.addToCell(o, 0, magSf[facei]);
+        assembly_.addToCell(nb, 1, magSf[facei]);
         cobasis_.addFace(o, S, faceO_, faceN_, assembly_);
         cobasis_.addFace(nb, -S, faceN_, faceO_, assembly_);
 
         if (centred)
         {
-            const cobasis::vector n(S/magSf_[facei]);
-            assembly_.internalContacts(o, n, magSf_[facei], faceO_, rec);
-            assembly_.internalContacts(nb, -n, magSf_[facei], faceN_, rec);
+            const cobasis::vector n(S/magSf[facei]);
+            assembly_.internalContacts(o, n, magSf[facei], faceO_, rec);
+            assembly_.internalContacts(nb, -n, magSf[facei], faceN_, rec);
         }
     }
 }
@@ -135,7 +106,8 @@ void Foam::demSolver::internalFaces()
 void Foam::demSolver::boundaryFaces()
 {
     const vectorField& Sf = mesh_.faceAreas();
-    const label nInternal = mesh_.nInternalFaces();
+    const vectorField& Cf = mesh_.faceCentres();
+    const vectorField& C = mesh_.cellCentres();
     const reconstruction& rec = reconstruction_();
     const bool centred = rec.timeCentred();
     const boundaryKinds& kinds = phases_.boundary();
@@ -159,20 +131,21 @@ void Foam::demSolver::boundaryFaces()
 
         const fvPatch& patch = mesh_.boundary()[patchi];
         const labelUList& fc = patch.faceCells();
+        const scalarField& pMagSf = patch.magSf();
         const label start = patch.start();
         const bool cellIsLeft = !coupled || kinds.coupledLeft(patchi);
 
         // Wedge faces: reconstruct at the image of the face centroid in
-        // the cell's plane (boundaryOffset_), then rotate into the face
-        // plane by half the wedge angle: both sides take that state
-        // (section 7)
+        // the cell's plane (Tinv Cf), then rotate into the face plane by
+        // half the wedge angle: both sides take that state (section 7)
         cobasis::matrix T(cobasis::matrix::Identity());
+        tensor Tinv(tensor::I);
         if (wedge)
         {
-            T = toEigen
-            (
-                refCast<const wedgePolyPatch>(patch.patch()).faceT()
-            );
+            const tensor& faceT =
+                refCast<const wedgePolyPatch>(patch.patch()).faceT();
+            T = toEigen(faceT);
+            Tinv = faceT.T();
         }
 
         forAll(fc, i)
@@ -180,7 +153,8 @@ void Foam::demSolver::boundaryFaces()
             const label facei = start + i;
             const label celli = fc[i];
             const cobasis::vector S(toEigen(Sf[facei]));
-            const cobasis::vector n(S/magSf_[facei]);
+            const scalar magS = pMagSf[i];
+            const cobasis::vector n(S/magS);
             const bool fallback = fallback_.firstOrderFace(facei);
 
             if (!coupled && fallback)
@@ -189,9 +163,14 @@ void Foam::demSolver::boundaryFaces()
             }
             else if (!coupled)
             {
+                // (the offset of the face centre, or of its image, from
+                // the cell centre)
                 rec.faceState
                 (
-                    celli, facei, boundaryOffset_[facei - nInternal],
+                    celli, facei,
+                    wedge
+                  ? vector((Tinv & Cf[facei]) - C[celli])
+                  : vector(Cf[facei] - C[celli]),
                     cellFace
                 );
             }
@@ -204,7 +183,7 @@ void Foam::demSolver::boundaryFaces()
             {
                 assembly_.internalContacts
                 (
-                    celli, n, magSf_[facei], side, rec
+                    celli, n, magS, side, rec
                 );
                 if (imaged)
                 {
@@ -233,9 +212,9 @@ void Foam::demSolver::boundaryFaces()
                 // solution, then the image face's
                 assembly_.solveFace
                 (
-                    side, side, frame(facei), fallback, true
+                    side, side, frame(facei, magS), fallback, true
                 );
-                assembly_.addToCell(celli, 0, magSf_[facei]);
+                assembly_.addToCell(celli, 0, magS);
                 cobasis_.addFace(celli, S, side, side, assembly_);
                 wedges_.addImage(i, celli, side, assembly_, cobasis_);
                 continue;
@@ -245,7 +224,10 @@ void Foam::demSolver::boundaryFaces()
 
             if (cellIsLeft)
             {
-                assembly_.solveFace(side, ghost_, frame(facei), fallback);
+                assembly_.solveFace
+                (
+                    side, ghost_, frame(facei, magS), fallback
+                );
             }
             else
             {
@@ -256,14 +238,14 @@ void Foam::demSolver::boundaryFaces()
                 );
             }
 
-            assembly_.addToCell(celli, cellIsLeft ? 0 : 1, magSf_[facei]);
+            assembly_.addToCell(celli, cellIsLeft ? 0 : 1, magS);
             if (!coupled && !wedge)
             {
                 // (the cell is the left side of a face that is not
                 // coupled)
                 const cobasis::vector m(assembly_.momentumToSide(0));
                 patchForces_[patchi] +=
-                    magSf_[facei]*vector(m(0), m(1), m(2));
+                    magS*vector(m(0), m(1), m(2));
             }
             cobasis_.addFace
             (

@@ -1,14 +1,10 @@
 #include "stableTimeStep.H"
+#include "surfaceFields.H"
 
-Foam::stableTimeStep::stableTimeStep
-(
-    const phaseSystem& phases,
-    const scalarField& magSf
-)
+Foam::stableTimeStep::stableTimeStep(const phaseSystem& phases)
 :
     phases_(phases),
     mesh_(phases.mesh()),
-    magSf_(magSf),
     limitingCell_(-1),
     limitingSpeed_(0),
     aMax_(mesh_.nCells()),
@@ -22,7 +18,7 @@ Foam::scalar Foam::stableTimeStep::deltaT(const cellStates& cells) const
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
     const vectorField& Sf = mesh_.faceAreas();
-    const scalarField& magSf = magSf_;
+    const scalarField& magSf = mesh_.magSf();
     const vectorField& U = phases_.U().primitiveField();
 
     // Largest longitudinal speed among the phases that are not minor

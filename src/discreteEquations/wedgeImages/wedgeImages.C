@@ -1,6 +1,7 @@
 #include "wedgeImages.H"
 #include "inputDefaults.H"
 #include "wedgePolyPatch.H"
+#include "surfaceFields.H"
 #include "foamEigen.H"
 
 using Foam::foamEigen::toEigen;
@@ -20,12 +21,10 @@ Foam::wedgeImages::wedgeImages
 (
     const fvMesh& mesh,
     const boundaryKinds& kinds,
-    const scalarField& magSf,
     const dictionary& schemeDict
 )
 :
     mesh_(mesh),
-    magSf_(magSf),
     patchA_(-1),
     patchB_(-1),
     Q_(cobasis::matrix::Identity())
@@ -86,6 +85,8 @@ void Foam::wedgeImages::pair
         Q = toEigen(b.faceT() & a.faceT().T());
         const vectorField& Sf = mesh_.faceAreas();
         const vectorField& Cf = mesh_.faceCentres();
+        const scalarField& magSfA = mesh_.boundary()[wedges[0]].magSf();
+        const scalarField& magSfB = mesh_.boundary()[wedges[1]].magSf();
 
         labelList faceB(mesh_.nCells(), -1);
         const labelUList& cellsB = b.faceCells();
@@ -115,9 +116,11 @@ void Foam::wedgeImages::pair
                 reason = "a cell without a face on " + b.name();
                 break;
             }
-            const cobasis::vector nA(toEigen(Sf[fa]/magSf_[fa]));
-            const cobasis::vector nB(toEigen(Sf[fb]/magSf_[fb]));
-            const scalar length = sqrt(magSf_[fa]);
+            const scalar magA = magSfA[i];
+            const scalar magB = magSfB[fb - b.start()];
+            const cobasis::vector nA(toEigen(Sf[fa]/magA));
+            const cobasis::vector nB(toEigen(Sf[fb]/magB));
+            const scalar length = sqrt(magA);
             const vector dImage
             (
                 (a.faceT().T() & Cf[fa]) - (b.faceT().T() & Cf[fb])
@@ -126,7 +129,7 @@ void Foam::wedgeImages::pair
             (
                 (nB + Q*nA).norm() > 1e-9
              || mag(dImage) > 1e-9*length
-             || mag(magSf_[fb] - magSf_[fa]) > 1e-9*magSf_[fa]
+             || mag(magB - magA) > 1e-9*magA
             )
             {
                 reason = "faces of a cell not images of each other";
@@ -170,7 +173,7 @@ void Foam::wedgeImages::internalContacts
     const label fb = image_[i];
     assembly.internalContacts
     (
-        celli, toEigen(Sf[fb]/magSf_[fb]), magSf_[fb], side, rec
+        celli, toEigen(Sf[fb]/magSfB(fb)), magSfB(fb), side, rec
     );
 }
 
@@ -186,7 +189,7 @@ void Foam::wedgeImages::addImage
 {
     const vectorField& Sf = mesh_.faceAreas();
     const label fb = image_[i];
-    assembly.addImageToCell(celli, magSf_[fb], Q_);
+    assembly.addImageToCell(celli, magSfB(fb), Q_);
     cobasis.addFace(celli, toEigen(Sf[fb]), side, side, assembly, &Q_);
 }
 
