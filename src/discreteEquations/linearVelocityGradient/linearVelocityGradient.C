@@ -12,8 +12,7 @@ Foam::linearVelocityGradient::linearVelocityGradient
     mesh_(mesh),
     stencil_(mesh, kinds),
     limit_(limit),
-    invG_(mesh.nCells(), Zero),
-    dByMagSqrD_(mesh.nInternalFaces())
+    invG_(mesh.nCells(), Zero)
 {
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
@@ -23,7 +22,6 @@ Foam::linearVelocityGradient::linearVelocityGradient
     forAll(nei, facei)
     {
         const vector d(C[nei[facei]] - C[own[facei]]);
-        dByMagSqrD_[facei] = d/magSqr(d);
         const symmTensor wdd(sqr(d)/magSqr(d));
         G[own[facei]] += wdd;
         G[nei[facei]] += wdd;
@@ -61,7 +59,13 @@ Foam::linearVelocityGradient::linearVelocityGradient
                 Gc += scale*sqr(e);
             }
         }
-        invG_[celli] = inv(tensor(Gc));
+        const tensor invGc(inv(tensor(Gc)));
+        invG_[celli] = symmTensor
+        (
+            invGc.xx(), invGc.xy(), invGc.xz(),
+            invGc.yy(), invGc.yz(),
+            invGc.zz()
+        );
     }
 }
 
@@ -76,6 +80,7 @@ void Foam::linearVelocityGradient::calculate
 {
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
+    const vectorField& C = mesh_.cellCentres();
     const volVectorField& Cv = mesh_.C();
 
     gradU.setSize(mesh_.nCells());
@@ -83,8 +88,9 @@ void Foam::linearVelocityGradient::calculate
 
     forAll(nei, facei)
     {
+        const vector d(C[nei[facei]] - C[own[facei]]);
         const vector dU(U[nei[facei]] - U[own[facei]]);
-        const tensor wddU(dByMagSqrD_[facei]*dU);
+        const tensor wddU((d/magSqr(d))*dU);
         gradU[own[facei]] += wddU;
         gradU[nei[facei]] += wddU;
     }

@@ -198,7 +198,8 @@ void Foam::reconstructions::MUSCLHancock::setCellSlopes
     forAll(alpha, c)
     {
         phaseSlopes& sl = slopes_[k][c];
-        solidSlopes* so = solid ? &solidSlopes_[k][c] : nullptr;
+        solidSlopes* so =
+            solid && solidSlopes_[k].has(c) ? &solidSlopes_[k][c] : nullptr;
         const vector* a = acceleration ? &(*acceleration)[c] : nullptr;
 
         // A cell the step takes at first order (the a posteriori
@@ -217,16 +218,11 @@ void Foam::reconstructions::MUSCLHancock::setCellSlopes
         {
             // A first-order cell's faces read the velocity slope, gradU_,
             // and the zero slopes of the others; a minor phase's face
-            // states are its cell state (faceState), so its cobasis slopes
-            // are left as they are (most cells of an impact hold a solid
-            // as a trace). The time-centred states read the zero
-            // increments
+            // states are its cell state (faceState). A solid has no
+            // record here (zero cobasis slopes and increment). The
+            // time-centred states read the zero increments
             sl.gRho.setZero();
             sl.gP.setZero();
-            if (so && first)
-            {
-                for (int i = 0; i < 3; ++i) so->gA[i].setZero();
-            }
             hancockPredictor::withoutSlopes(halfDt, a, sl, so);
             continue;
         }
@@ -288,6 +284,10 @@ void Foam::reconstructions::MUSCLHancock::update
         // neighbour) and the cells whose slopes are read
         alphaRange(alpha, minAlpha_, maxAlpha_);
         markSlopeCells(k);
+        if (phases_.phase(k).solid())
+        {
+            solidSlopes_[k].assign(slopeCells_);
+        }
 
         // The limited slopes: alpha (as its profile takes it), rho, p and
         // a solid's cobasis
@@ -405,11 +405,19 @@ void Foam::reconstructions::MUSCLHancock::faceState
         sk.U = toEigen(Uc) + toEigen(gradU_[celli]).transpose()*de + sl.dtU;
         if (ph.solid())
         {
-            const solidSlopes& so = solidSlopes_[k][celli];
-            sk.A =
-                toEigen(phases_.A(k)[celli])
-              + de(0)*so.gA[0] + de(1)*so.gA[1] + de(2)*so.gA[2]
-              + so.dtA;
+            // (a cell without a record: zero slopes and increment)
+            const solidSlopes* so = solidSlopes_[k].find(celli);
+            if (so)
+            {
+                sk.A =
+                    toEigen(phases_.A(k)[celli])
+                  + de(0)*so->gA[0] + de(1)*so->gA[1] + de(2)*so->gA[2]
+                  + so->dtA;
+            }
+            else
+            {
+                sk.A = toEigen(phases_.A(k)[celli]);
+            }
         }
         else
         {
@@ -470,10 +478,9 @@ void Foam::reconstructions::MUSCLHancock::centreState
         const hyperelasticPhase& ph = phases_.phase(k);
         const double rho = sk.rho + sl.dtRho;
         const double p = sk.p + sl.dtP;
-        const cobasis::matrix A
-        (
-            ph.solid() ? (sk.A + solidSlopes_[k][celli].dtA).eval() : sk.A
-        );
+        const solidSlopes* so =
+            ph.solid() ? solidSlopes_[k].find(celli) : nullptr;
+        const cobasis::matrix A(so ? (sk.A + so->dtA).eval() : sk.A);
         if
         (
             ph.eos().admissible(rho, p)

@@ -21,7 +21,7 @@ void Foam::cobasisGradient::gaussSlopes
 (
     const volTensorField& A,
     const boolList& active,
-    std::vector<solidSlopes>& slopes
+    solidSlopeRecords& slopes
 ) const
 {
     const labelUList& own = mesh_.owner();
@@ -126,7 +126,7 @@ void Foam::cobasisGradient::limit
 (
     const volTensorField& A,
     const boolList& active,
-    std::vector<solidSlopes>& slopes
+    solidSlopeRecords& slopes
 ) const
 {
     // Tensor component 3 r + s is gA(r, s)
@@ -174,7 +174,7 @@ void Foam::cobasisGradient::calculate
 (
     const volTensorField& A,
     const boolList& active,
-    std::vector<solidSlopes>& slopes
+    solidSlopeRecords& slopes
 ) const
 {
     gaussSlopes(A, active, slopes);
