@@ -32,8 +32,9 @@ def clear_times(case, keep="0"):
 
 def n_cells(case):
     """The cells of the case's mesh, from the header of its owner file"""
-    header = open(os.path.join(case, "constant", "polyMesh",
-                               "owner")).read(2000)
+    # (the header is text also in a binary file)
+    header = open(os.path.join(case, "constant", "polyMesh", "owner"),
+                  "rb").read(2000).decode("ascii", "replace")
     return int(re.search(r"nCells:\s*(\d+)", header).group(1))
 
 
