@@ -69,10 +69,11 @@ Foam::scalar Foam::stableTimeStep::deltaT(const cellStates& cells) const
         const fvPatch& patch = mesh_.boundary()[patchi];
         const labelUList& fc = patch.faceCells();
         const vectorField& pSf = patch.Sf();
+        const scalarField& pMagSf = patch.magSf();
         forAll(fc, i)
         {
             sumLambda[fc[i]] +=
-                mag(U[fc[i]] & pSf[i]) + aMax[fc[i]]*mag(pSf[i]);
+                mag(U[fc[i]] & pSf[i]) + aMax[fc[i]]*pMagSf[i];
         }
     }
 

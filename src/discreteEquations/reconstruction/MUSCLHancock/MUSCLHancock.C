@@ -198,8 +198,7 @@ void Foam::reconstructions::MUSCLHancock::setCellSlopes
     forAll(alpha, c)
     {
         phaseSlopes& sl = slopes_[k][c];
-        solidSlopes* so =
-            solid && solidSlopes_[k].has(c) ? &solidSlopes_[k][c] : nullptr;
+        solidSlopes* so = solid ? solidSlopes_[k].find(c) : nullptr;
         const vector* a = acceleration ? &(*acceleration)[c] : nullptr;
 
         // A cell the step takes at first order (the a posteriori
