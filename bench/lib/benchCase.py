@@ -38,6 +38,13 @@ def n_cells(case):
     return int(re.search(r"nCells:\s*(\d+)", header).group(1))
 
 
+def summary(times, cells, warmup):
+    """timeSteps.py's summary of the time stamps in the file times"""
+    return json.loads(subprocess.check_output(
+        [sys.executable, TIME_STEPS, "summary", times, str(cells),
+         str(warmup)], text=True))
+
+
 def timed(case, tag, cmd, cells, warmup, env=None):
     """Runs cmd in case under timeSteps.py (log.<tag>, times.<tag>) and
     returns the summary of its time loop"""
@@ -47,6 +54,4 @@ def timed(case, tag, cmd, cells, warmup, env=None):
                        + cmd, cwd=case, env=env):
         sys.exit("bench: %s failed in %s (see %s)"
                  % (" ".join(cmd), case, log))
-    return json.loads(subprocess.check_output(
-        [sys.executable, TIME_STEPS, "summary", times, str(cells),
-         str(warmup)], text=True))
+    return summary(times, cells, warmup)
