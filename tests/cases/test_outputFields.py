@@ -3,16 +3,22 @@
 are read (phaseSystem::correctOutputs, stepControl::write).
 
 The solver computes them, the stress of every solid in every cell, only
-when they are written, or every step if the case has function objects.
-The case tests/cases/voidCells (1-D, copper and air, a copper trace moving
-through near-vacuum air, 8 steps to 0.1 us: the trace is metal dust and
-does not set the time step, docs/numerics.md 2.7) is run twice:
+when they are written, or every step if the case has a function object
+other than impactFoam's time histories (which read the phases, never these
+fields) or may change its function objects at run time
+(stepControl::outputsReadEveryStep). The case tests/cases/voidCells (1-D,
+copper and air, a copper trace moving through near-vacuum air, 8 steps to
+0.1 us: the trace is metal dust and does not set the time step,
+docs/numerics.md 2.7) is run three times:
 
 - A: written every step, no function objects (the fields on disk at every
   step are the reference);
 - B: written only at the end time (writeInterval 1000 steps: the end time
   is not a write time, the solver's final write), with a fieldMinMax
-  function object on p and sigmaEq every step.
+  function object on p and sigmaEq every step beside an energyBudget, and
+  runTimeModifiable off (the function objects are known from the start);
+- C: as B with the energyBudget only: the fields are computed for the
+  final write alone.
 
 Checks:
 - both runs reach their end time, A in more than 5 steps;
@@ -22,8 +28,8 @@ Checks:
   write times, the function object would see the initial ones: p's
   largest value 4.4e6 Pa after the first step against 1e5 Pa at the
   start);
-- B's final p, sigma and sigmaEq equal A's at the end time to 1e-12 of each
-  field's largest magnitude.
+- B's and C's final p, sigma and sigmaEq equal A's at the end time to
+  1e-12 of each field's largest magnitude.
 """
 import os
 import sys
@@ -42,9 +48,15 @@ TOL = 1e-12
 PRINT_TOL = 1e-10                 # 12-13 significant digits in the files
 FIELDS = ("p", "sigmaEq")
 
-FUNCTIONS = """
-functions
-{
+ENERGY = """
+    energy
+    {
+        type            energyBudget;
+        libs            (impactFoamFunctionObjects);
+    }
+"""
+
+MIN_MAX = """
     minMax
     {
         type            fieldMinMax;
@@ -54,7 +66,6 @@ functions
         writeControl    timeStep;
         writeInterval   1;
     }
-}
 """
 
 checks = Checks()
@@ -64,8 +75,10 @@ def run(name, functions):
     case = fc.copy_tutorial(CASE, name)
     if functions:
         fc.set_entry(case, "system/controlDict", "writeInterval", "1000")
+        fc.set_entry(case, "system/controlDict", "runTimeModifiable",
+                     "false")
         with open(os.path.join(case, "system", "controlDict"), "a") as f:
-            f.write(FUNCTIONS)
+            f.write("\nfunctions\n{\n%s}\n" % functions)
     fc.run(case, "./Allrun", log="log.Allrun", timeout=RUN_TIMEOUT)
     return case
 
@@ -97,20 +110,23 @@ def main():
                     % " ".join(missing))
         checks.exit()
     try:
-        a = run("outputFields_written", functions=False)
-        b = run("outputFields_functionObject", functions=True)
+        a = run("outputFields_written", functions="")
+        b = run("outputFields_functionObject", functions=ENERGY + MIN_MAX)
+        c = run("outputFields_histories", functions=ENERGY)
     except fc.FoamError as e:
         checks.fail("outputFields_run", e.summary)
         checks.exit()
 
     times_a = [name for _, name in fc.time_dirs(a)]
     times_b = [name for _, name in fc.time_dirs(b)]
-    reached = (abs(float(times_a[-1]) - T_END) <= 1e-6 * T_END
-               and abs(float(times_b[-1]) - T_END) <= 1e-6 * T_END)
+    times_c = [name for _, name in fc.time_dirs(c)]
+    reached = all(abs(float(t[-1]) - T_END) <= 1e-6 * T_END
+                  for t in (times_a, times_b, times_c))
     checks.check("outputFields_run", reached and len(times_a) > 6,
-                 "A wrote %d times, B %d; last at %s and %s s (end %g s)"
-                 % (len(times_a), len(times_b), times_a[-1], times_b[-1],
-                    T_END))
+                 "A wrote %d times, B %d, C %d; last at %s, %s and %s s "
+                 "(end %g s)"
+                 % (len(times_a), len(times_b), len(times_c), times_a[-1],
+                    times_b[-1], times_c[-1], T_END))
 
     # B's function object against A's fields, step by step
     fo = min_max_log(b)
@@ -137,16 +153,19 @@ def main():
                  % (n, worst, PRINT_TOL, "%.6g" % first_pmax
                     if first_pmax is not None else "-"))
 
-    # The final write of B (not a write time) against A's
-    diffs = {}
-    for field in ("p", "sigma", "sigmaEq"):
-        fa = fc.read_field(a, times_a[-1], field)
-        fb = fc.read_field(b, times_b[-1], field)
-        diffs[field] = (np.max(np.abs(fa - fb))
-                        / max(np.max(np.abs(fa)), 1e-300))
-    checks.check("outputFields_finalWrite", max(diffs.values()) <= TOL,
-                 "B's fields at the end time against A's: %s (bound %g)"
-                 % (", ".join("%s %.3e" % kv for kv in diffs.items()), TOL))
+    # The final writes of B and C (not write times) against A's
+    for run_name, case, times in (("B", b, times_b), ("C", c, times_c)):
+        diffs = {}
+        for field in ("p", "sigma", "sigmaEq"):
+            fa = fc.read_field(a, times_a[-1], field)
+            fb = fc.read_field(case, times[-1], field)
+            diffs[field] = (np.max(np.abs(fa - fb))
+                            / max(np.max(np.abs(fa)), 1e-300))
+        checks.check("outputFields_finalWrite%s" % run_name,
+                     max(diffs.values()) <= TOL,
+                     "%s's fields at the end time against A's: %s (bound %g)"
+                     % (run_name, ", ".join("%s %.3e" % kv
+                                            for kv in diffs.items()), TOL))
     checks.exit()
 
 

@@ -1,4 +1,5 @@
 #include "stepControl.H"
+#include "stepLedger.H"
 #include "landingDeltaT.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -204,6 +205,31 @@ bool Foam::stepControl::accept
 }
 
 
+bool Foam::stepControl::outputsReadEveryStep() const
+{
+    const functionObjectList& functions = runTime_.functionObjects();
+    if (functions.empty())
+    {
+        return false;
+    }
+    if (runTime_.runTimeModifiable())
+    {
+        // The list may be read again, a name kept for another type
+        return true;
+    }
+    const stepLedger& ledger =
+        phases_.mesh().lookupObject<stepLedger>(stepLedger::typeName);
+    forAll(functions, i)
+    {
+        if (!ledger.isHistory(functions[i].name()))
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
 void Foam::stepControl::write()
 {
     const bool pendingNow =
@@ -212,11 +238,7 @@ void Foam::stepControl::write()
 
     // The output mixture fields (p, sigma, sigmaEq) when they are written,
     // and every step if function objects may read them
-    if
-    (
-        runTime_.writeTime() || pendingNow
-     || !runTime_.functionObjects().empty()
-    )
+    if (runTime_.writeTime() || pendingNow || outputsReadEveryStep())
     {
         phases_.correctOutputs();
     }

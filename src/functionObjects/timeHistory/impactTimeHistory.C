@@ -15,6 +15,13 @@ Foam::functionObjects::impactTimeHistory::impactTimeHistory
 {
     impactTimeHistory::read(dict);
     resetFile(name);
+
+    // Tell the solver that this function object does not read the output
+    // mixture fields (without impactFoam, ledger() stops at first use)
+    if (mesh_.foundObject<stepLedger>(stepLedger::typeName))
+    {
+        ledger().addHistory(name);
+    }
 }
 
 
