@@ -1,4 +1,5 @@
 #include "phaseModel.H"
+#include "correctBoundaryConditionsInPlace.H"
 #include "keywordCheck.H"
 #include "inputDefaults.H"
 #include "readOption.H"
@@ -277,13 +278,13 @@ Foam::label Foam::phaseModel::carriedIndex(const word& name) const
 
 void Foam::phaseModel::correctBoundaryConditions()
 {
-    alpha_.correctBoundaryConditions();
-    rho_.correctBoundaryConditions();
-    p_->correctBoundaryConditions();
+    correctBoundaryConditionsInPlace(alpha_);
+    correctBoundaryConditionsInPlace(rho_);
+    correctBoundaryConditionsInPlace(p_());
 
     if (solid())
     {
-        A_->correctBoundaryConditions();
+        correctBoundaryConditionsInPlace(A_());
     }
 }
 

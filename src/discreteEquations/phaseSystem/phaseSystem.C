@@ -1,4 +1,5 @@
 #include "phaseSystem.H"
+#include "correctBoundaryConditionsInPlace.H"
 #include "keywordCheck.H"
 #include "phaseMaterial.H"
 #include "alphaClosure.H"
@@ -289,7 +290,7 @@ void Foam::phaseSystem::correctBoundaryConditions()
     {
         phase.correctBoundaryConditions();
     }
-    U_.correctBoundaryConditions();
+    correctBoundaryConditionsInPlace(U_);
 }
 
 
