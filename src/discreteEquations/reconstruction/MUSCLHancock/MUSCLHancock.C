@@ -435,7 +435,7 @@ void Foam::reconstructions::MUSCLHancock::faceState
             sk.rho = rhoc;
             sk.p = pc;
             sk.U = toEigen(Uc);
-            sk.A = cellCobasis(k, celli);
+            sk.A = cobasisOrIdentity(k, celli);
         }
         completeSide(k, sk);
 
@@ -464,7 +464,7 @@ void Foam::reconstructions::MUSCLHancock::centreState
         sk.rho = phases_.rho(k)[celli];
         sk.p = phases_.p(k)[celli];
         sk.U = toEigen(Uc);
-        sk.A = cellCobasis(k, celli);
+        sk.A = cobasisOrIdentity(k, celli);
         sk.a = cells_.a(k, celli);
         cellCarried(k, celli, sk);
 

@@ -89,7 +89,7 @@ void Foam::reconstruction::cellSide
     s.rho = phases_.rho(k)[celli];
     s.p = phases_.p(k)[celli];
     s.U = U;
-    s.A = cellCobasis(k, celli);
+    s.A = cobasisOrIdentity(k, celli);
     cellCarried(k, celli, s);
     if (ph.solid())
     {
