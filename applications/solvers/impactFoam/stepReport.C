@@ -24,7 +24,7 @@ Foam::stepReport::stepReport
 
 void Foam::stepReport::counts::reduce()
 {
-    List<scalar> all(7);
+    List<scalar> all(8);
     all[0] = vacuumCells;
     all[1] = unpaidCells;
     all[2] = unpaidEnergy;
@@ -32,6 +32,7 @@ void Foam::stepReport::counts::reduce()
     all[4] = fallbackFaces;
     all[5] = voidCells;
     all[6] = voidEnergy;
+    all[7] = untransportedCells;
     Pstream::listCombineGather(all, plusEqOp<scalar>());
     Pstream::listCombineScatter(all);
     vacuumCells = all[0];
@@ -41,6 +42,7 @@ void Foam::stepReport::counts::reduce()
     fallbackFaces = all[4];
     voidCells = all[5];
     voidEnergy = all[6];
+    untransportedCells = all[7];
 }
 
 
@@ -54,6 +56,7 @@ void Foam::stepReport::step(const scalar deltaT)
     n.fallbackFaces = dem_.fallback().nFaces();
     n.voidCells = voidCells_.nCells();
     n.voidEnergy = voidCells_.energy();
+    n.untransportedCells = dem_.cobasis().missedCells();
     n.reduce();
 
     dem_.fallback().countStep(n.fallbackCells, n.fallbackFaces);
@@ -61,6 +64,11 @@ void Foam::stepReport::step(const scalar deltaT)
     {
         Info<< "    vacuum floor (pVacuum) in " << n.vacuumCells << " cells"
             << nl;
+    }
+    if (n.untransportedCells > 0)
+    {
+        Info<< "    cobasis not transported (a solid arrived without sums) in "
+            << n.untransportedCells << " cells" << nl;
     }
     if (n.unpaidCells > 0)
     {

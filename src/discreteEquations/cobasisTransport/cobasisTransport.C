@@ -23,8 +23,10 @@ Foam::cobasisTransport::cobasisTransport
     phases_(phases),
     nPhases_(phases.size()),
     keepRotation_(false),
-    L_(nPhases_),
-    advection_(nPhases_),
+    slot_(nPhases_),
+    sums_(nPhases_),
+    near_(phases.mesh().nCells(), false),
+    missed_(0),
     A_(nPhases_, nullptr),
     rec_(nullptr)
 {
@@ -47,9 +49,66 @@ Foam::cobasisTransport::cobasisTransport
     {
         if (phases.phase(k).solid())
         {
-            L_[k].resize(nCells);
-            advection_[k].resize(nCells);
+            slot_[k].assign(nCells, -1);
         }
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::cobasisTransport::assignSums(const label k)
+{
+    const fvMesh& mesh = phases_.mesh();
+    const phaseRegimes& regimes = phases_.regimes();
+    const volScalarField& alpha = phases_.alpha(k);
+    const scalarField& a = alpha.primitiveField();
+    const labelUList& own = mesh.owner();
+    const labelUList& nei = mesh.neighbour();
+
+    forAll(near_, c)
+    {
+        near_[c] = !regimes.trace(a[c]);
+    }
+    forAll(nei, facei)
+    {
+        const label o = own[facei];
+        const label n = nei[facei];
+        if (!regimes.trace(a[n])) near_[o] = true;
+        if (!regimes.trace(a[o])) near_[n] = true;
+    }
+    forAll(mesh.boundary(), patchi)
+    {
+        if (phases_.boundary()[patchi] != boundaryKinds::kind::coupled)
+        {
+            continue;
+        }
+        const scalarField nbr
+        (
+            alpha.boundaryField()[patchi].patchNeighbourField()
+        );
+        const labelUList& fc = mesh.boundary()[patchi].faceCells();
+        forAll(fc, i)
+        {
+            if (!regimes.trace(nbr[i])) near_[fc[i]] = true;
+        }
+    }
+
+    std::vector<label>& slot = slot_[k];
+    label n = 0;
+    forAll(near_, c)
+    {
+        slot[c] = near_[c] ? n++ : -1;
+    }
+    std::vector<sums>& s = sums_[k];
+    if (n > label(s.size()))
+    {
+        s.resize(n);
+    }
+    for (label i = 0; i < n; ++i)
+    {
+        s[i].L.setZero();
+        s[i].advection.setZero();
     }
 }
 
@@ -59,18 +118,12 @@ Foam::cobasisTransport::cobasisTransport
 void Foam::cobasisTransport::reset(const reconstruction& rec)
 {
     rec_ = &rec;
+    missed_ = 0;
     for (label k = 0; k < nPhases_; ++k)
     {
-        for (cobasis::matrix& L : L_[k])
-        {
-            L.setZero();
-        }
-        for (cobasis::matrix& a : advection_[k])
-        {
-            a.setZero();
-        }
         if (phases_.phase(k).solid())
         {
+            assignSums(k);
             A_[k] = &phases_.A(k).primitiveField();
         }
     }
@@ -90,12 +143,15 @@ void Foam::cobasisTransport::addFace
     for (label k = 0; k < nPhases_; ++k)
     {
         if (!phases_.phase(k).solid()) continue;
+        const label slot = slot_[k][c];
+        if (slot < 0) continue;
+        sums& sc = sums_[k][slot];
 
         const cobasis::vector vStar
         (
             Q ? (*Q*assembly.vStar(k)).eval() : assembly.vStar(k)
         );
-        L_[k][c] += vStar*SfOut.transpose();
+        sc.L += vStar*SfOut.transpose();
 
         const double flux = vStar.dot(SfOut);
 
@@ -108,11 +164,11 @@ void Foam::cobasisTransport::addFace
         const cobasis::matrix Ac(Ahalf(k, c));
         if (Q)
         {
-            advection_[k][c] += flux*(up.A*Q->transpose() - Ac);
+            sc.advection += flux*(up.A*Q->transpose() - Ac);
         }
         else
         {
-            advection_[k][c] += flux*(up.A - Ac);
+            sc.advection += flux*(up.A - Ac);
         }
     }
 }
@@ -127,10 +183,17 @@ Foam::cobasis::matrix Foam::cobasisTransport::update
     const cobasis::matrix& A
 ) const
 {
+    const label slot = slot_[k][c];
+    if (slot < 0)
+    {
+        ++missed_;
+        return A;
+    }
+    const sums& sc = sums_[k][slot];
     const scalar dtByV = dt/V;
     cobasis::matrix Anew
     (
-        A - dtByV*advection_[k][c] - dt*(Ahalf(k, c)*L_[k][c])/V
+        A - dtByV*sc.advection - dt*(Ahalf(k, c)*sc.L)/V
     );
 
     // Stored without rotation (an inverted cobasis is left for the
