@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "interfacePressure.H"
+#include "interfaceRoot.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -48,12 +49,30 @@ Foam::scalar Foam::interfacePressure::relaxedVolume
         dvdp = 0;
         return eos.vRelaxed(cell.pHeld[k], 1/cell.v[k], cell.e[k]);
     }
-    return eos.vRelaxed(pStar, 1/cell.v[k], cell.e[k], dvdp);
+    // A metal expands no further than its lowest density (half its
+    // reference density, mechanicalRelaxation::compactMetals): beyond it
+    // it takes no more volume and no more work from a tension of the cell
+    // (a phase already beyond it, the cell's largest that compactMetals
+    // leaves alone, is not compressed to it). Its path reaches that volume
+    // above the lowest pressure of the path, where v grows without bound
+    const scalar vMax = max(cell.vMax[k], cell.v[k]);
+    if (vMax < VGREAT && !(pStar > cell.pLowest[k]))
+    {
+        dvdp = 0;
+        return vMax;
+    }
+    const scalar v = eos.vRelaxed(pStar, 1/cell.v[k], cell.e[k], dvdp);
+    if (v > vMax)
+    {
+        dvdp = 0;
+        return vMax;
+    }
+    return v;
 }
 
 bool Foam::interfacePressure::solve
 (
-    const relaxationCell& cell,
+    relaxationCell& cell,
     const scalar volume,
     scalar& p
 ) const
@@ -75,9 +94,11 @@ bool Foam::interfacePressure::solve
             cell.isentropic[k]
           ? path.pLowest(1/cell.v[k], cell.e[k])
           : eos.pRelaxedMin(1/cell.v[k], cell.e[k]);
+        cell.pLowest[k] = pPath;
         const bool held =
             (cell.isentropic[k] && path.cavitationPressure() > pPath)
-         || (cell.held[k] && cell.pHeld[k] > pPath);
+         || (cell.held[k] && cell.pHeld[k] > pPath)
+         || cell.vMax[k] < VGREAT;
         if (!held)
         {
             // v_k(p) grows without bound as p -> pPath
@@ -87,8 +108,6 @@ bool Foam::interfacePressure::solve
         pGuess += cell.alpha[k]*pk;
         wGuess += cell.alpha[k];
     }
-    scalar hi = GREAT;
-
     const auto F = [&](const scalar pp, scalar& dF)
     {
         scalar f = -volume;
@@ -103,51 +122,8 @@ bool Foam::interfacePressure::solve
         return f;
     };
 
-    p = pGuess/wGuess;
-    if (!(p > lo)) p = lo + 1e-6*max(pScale, scalar(1));
-
-    // Newton steps that do not shrink (a zigzag about the kink of a fluid
-    // held at its cavitation pressure) give way to bisection
-    scalar stepOld = GREAT;
-    for (int iter = 0; iter < 300; ++iter)
-    {
-        scalar dF;
-        const scalar f = F(p, dF);
-        if (f == 0)
-        {
-            return true;
-        }
-        if (f > 0) lo = p; else hi = p;
-
-        scalar pNew = p - f/dF;
-        const bool stalled = mag(pNew - p) > 0.5*stepOld && hi < GREAT;
-        stepOld = mag(pNew - p);
-        if (!(pNew > lo && pNew < hi) || stalled)
-        {
-            // Bisect, or expand when no upper bound is known yet
-            pNew =
-                (hi < GREAT)
-              ? 0.5*(lo + hi)
-              : p + 2*max(mag(p - lo), scalar(1));
-        }
-        // Converged in p, and in the volume unless p is resolved to
-        // round-off: a nearly empty gas next to failed or cavitating
-        // material takes its volume at p* near 0, where a pressure
-        // tolerance relative to the metal's scale would leave the volume
-        // wrong by percent (and the closing of the volumes would hand
-        // that to the metal as a tension of GPa)
-        if
-        (
-            mag(pNew - p) <= 1e-15*(mag(pNew) + pScale)
-         && (mag(f) <= 1e-12*volume || mag(pNew - p) <= 1e-15*mag(pNew))
-        )
-        {
-            p = pNew;
-            return true;
-        }
-        p = pNew;
-    }
-    return false;
+    p = wGuess > 0 ? pGuess/wGuess : lo;
+    return interfaceRoot(F, lo, pScale, 1e-12*volume, p);
 }
 
 bool Foam::interfacePressure::relax

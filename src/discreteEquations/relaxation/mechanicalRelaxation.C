@@ -7,6 +7,7 @@
 using Foam::foamEigen::toTensor;
 
 
+
 Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
 :
     phases_(phases),
@@ -33,6 +34,10 @@ Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
         rhoRef_[k] = eos.referenceDensity();
         rhoCompressed_[k] =
             rhoRef_[k] > 0 ? min(2*rhoRef_[k], eos.rhoMax()) : eos.rhoMax();
+        if (rhoRef_[k] > 0)
+        {
+            cell_.vMax[k] = 2/rhoRef_[k];
+        }
 
         // A gas at the edge of a vacuum (behind a body faster than its
         // escape speed, or among debris) holds next to no mass, and its
@@ -106,13 +111,7 @@ void Foam::mechanicalRelaxation::relaxVelocity
 }
 
 
-bool Foam::mechanicalRelaxation::relaxPressures
-(
-    const label c,
-    conservedState& q,
-    const label main,
-    scalar& pStar
-)
+Foam::label Foam::mechanicalRelaxation::countActive()
 {
     cell_.nActive = 0;
     cell_.traceVolume = 0;
@@ -121,8 +120,19 @@ bool Foam::mechanicalRelaxation::relaxPressures
         if (cell_.trace[k]) cell_.traceVolume += cell_.alpha[k];
         else ++cell_.nActive;
     }
+    return cell_.nActive;
+}
 
-    if (cell_.nActive > 1)
+
+bool Foam::mechanicalRelaxation::relaxPressures
+(
+    const label c,
+    conservedState& q,
+    const label main,
+    scalar& pStar
+)
+{
+    if (countActive() > 1)
     {
         if (!pressure_.relax(cell_, q, c, pStar))
         {
@@ -239,7 +249,7 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
         //    would push the heat into its neighbours (a light gas next to
         //    a yielding metal took it all and reached 1e5 K)
         const bool heated = relaxPlastic(c, q, dt);
-        if (heated && cell_.nActive > 1)
+        if (heated && countActive() > 1)
         {
             // The traces' reset (4) is paid by the heaviest active phase:
             // a nearly empty gas that pays it (air in a crater, cold from

@@ -85,11 +85,15 @@ void Foam::mechanicalRelaxation::relaxFailed
         // volume
         open = open || pk < floor || cell_.pinned[k];
     }
-    if (!open)
+    if (open)
     {
-        return;
+        openUp(c);
     }
+}
 
+
+void Foam::mechanicalRelaxation::openUp(const label c)
+{
     // Every fluid with mass takes part; a failed solid that is only a
     // trace stays one. A fluid the step left at the edge of its range (a
     // gas torn open in the gap) is floored first (pVacuum), or else stays
@@ -119,7 +123,10 @@ void Foam::mechanicalRelaxation::relaxFailed
     if (!fluid)
     {
         // Nothing can take the volume: the damaged material keeps its
-        // tension (a case without a fluid phase)
+        // tension (a case without a fluid phase). A solid of the cell
+        // that is not held would otherwise be stretched to fill whatever
+        // volume the held one gives up (an aluminium sliver of 1e-6 of
+        // the cell taken to 4 % of its density and -1e15 Pa)
         for (label k = 0; k < nPhases_; ++k)
         {
             cell_.held[k] = false;
@@ -127,7 +134,6 @@ void Foam::mechanicalRelaxation::relaxFailed
         }
     }
 }
-
 
 
 bool Foam::mechanicalRelaxation::relaxPlastic
@@ -138,6 +144,7 @@ bool Foam::mechanicalRelaxation::relaxPlastic
 )
 {
     bool heated = false;
+    bool open = false;
     for (label k = 0; k < nPhases_; ++k)
     {
         phaseModel& phase = phases_[k];
@@ -168,8 +175,18 @@ bool Foam::mechanicalRelaxation::relaxPlastic
                 cell_.held[k] = true;
                 cell_.pHeld[k] = inelastic.pFloor(carried);
                 heated = true;
+                open =
+                    open
+                 || ph.eos().p(1/cell_.v[k], cell_.e[k]) < cell_.pHeld[k];
             }
         }
+    }
+    if (open)
+    {
+        // Material that failed in this step while in tension opens up as
+        // in relaxFailed: the fluids of the cell take the volume it gives
+        // up, or, with none, it keeps its tension
+        openUp(c);
     }
     return heated;
 }

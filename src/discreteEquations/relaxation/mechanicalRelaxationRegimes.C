@@ -164,8 +164,8 @@ void Foam::mechanicalRelaxation::compactMetals
 {
     for (label k = 0; k < nPhases_; ++k)
     {
-        const scalar rhoRef = rhoRef_[k];
-        if (k == main || !(rhoRef > 0) || !(cell_.m[k] < 0.5*rhoRef*cell_.alpha[k]))
+        const scalar vMax = cell_.vMax[k];
+        if (k == main || !(cell_.alpha[k] > vMax*cell_.m[k]))
         {
             continue;
         }
@@ -176,10 +176,15 @@ void Foam::mechanicalRelaxation::compactMetals
         // mass (steel at 0.07 rho0 and alpha 0.0075 in an air cell beside
         // an oblique impact, at -2e12 Pa, where its Mie-Grueneisen pressure
         // swings by 1e12 Pa for a one-per-mille change of density). The
-        // metal takes its reference density at its specific energy, the
-        // volume going to the cell's largest phase: only volumes change,
-        // the energy is conserved
-        const scalar dAlpha = cell_.m[k]/rhoRef - cell_.alpha[k];
+        // metal takes its lowest density, half the reference density, at
+        // its specific energy, the volume going to the cell's largest
+        // phase: only volumes change, the energy is conserved. Not to the
+        // reference density: the pressure relaxation would then expand it
+        // again under a tension of the cell and hand it the work of that
+        // expansion, step after step (a minor aluminium phase in a
+        // tungsten rod's nose cell heated to 1e11 J/kg, the rod cooled
+        // below absolute zero and stretched to -1.8e11 Pa)
+        const scalar dAlpha = cell_.m[k]*vMax - cell_.alpha[k];
         cell_.alpha[k] += dAlpha;
         cell_.alpha[main] -= dAlpha;
     }
