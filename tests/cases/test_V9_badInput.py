@@ -70,7 +70,8 @@ gives (defaultsPrintedOnce).
 
 Unphysical runs (must stop during the run with a FatalError whose message
 says 'unphysical state' and names the phase, the cell, the time and the
-offending value, after writing the last good fields: the time directory
+offending value and what the user may change ("What may help:"), after
+writing the last good fields: the time directory
 named in the message exists, is earlier than the failure time, is the
 latest one, and holds finite fields with rho > 0 and p > -pInf for every
 phase):
@@ -749,6 +750,8 @@ def check_unphysical(name, modifications, what, patterns=()):
     for pattern in patterns:
         if not re.search(pattern, head):
             problems.append("message does not match %s" % pattern)
+    if "What may help:" not in head:
+        problems.append("message says nothing of what the user can change")
     m_phase = re.search(r"phase\s+(%s)\b" % "|".join(PHASES), head)
     m_cell = re.search(r"cell\s+(\d+)", head)
     m_time = re.search(r"time\s+(%s)" % _NUM, head)

@@ -456,6 +456,54 @@ bodies
                  "cells' largest speed %.3g" % (full.sum(), err, still))
 
 
+def check_warnings():
+    """A body too few cells across (a cell size in millimetres typed for
+    metres), a solid without failure at speed: warned, not stopped; and
+    neither warning where it does not apply."""
+    text = """geometry axisymmetric;
+domain { min (-4e-3 0 0); max (4e-3 4e-3 0); cellSize CELL;
+         patches { xMin wall; xMax open; yMax open; } }
+ambient { material air; p 1e5; T 293; }
+bodies
+{
+    rod { shape cylinder; base (0.5e-3 0 0); axis (1 0 0); length 3e-3;
+          radius 1e-3; material tungstenAlloy; U (-SPEED 0 0); T 293; }
+    plate { shape box; min (-4e-3 0 -1); max (0 4e-3 1);
+            material steel4340; T 293; }
+}
+"""
+    cases = (("coarse", "1e-3", "500", True, False),
+             ("fast", "0.25e-3", "4000", False, True),
+             ("neither", "0.25e-3", "500", False, False))
+    for name, h, v, coarse, fast in cases:
+        case = new_case("warn_" + name,
+                        text.replace("CELL", h).replace("SPEED", v))
+        log = run_setup(case, check=False)
+        written = "FOAM FATAL" not in log and os.path.isfile(
+            os.path.join(case, "0", "alpha.tungstenAlloy"))
+        w_cells = "Body rod is 1 cells across its smallest extent" in log
+        w_fail = ("Phase tungstenAlloy (material tungstenAlloy) is a solid "
+                  "without a failure model, and bodies meet at 4000 m/s"
+                  in log)
+        # steel4340 has its Johnson-Cook failure: never warned
+        w_steel = "Phase steel4340 (material steel4340) is a solid" in log
+        # the plate reaches the open patch yMax; the rod's tail is 0.5 mm
+        # from xMax: within 1.5 cells of 1 mm, not of 0.25 mm
+        w_plate = ("Body plate lies within a cell of the open patch yMax"
+                   in log)
+        w_rod = "Body rod lies within a cell of the open patch xMax" in log
+        ok = (written and w_cells == coarse and w_fail == fast
+              and not w_steel and w_plate and w_rod == coarse)
+        checks.check("impactSetup_warn_" + name, ok,
+                     "cellSize %s m, %s m/s: files written %s; warned of "
+                     "too few cells %s (expected %s), of no failure model "
+                     "%s (expected %s), of steel's %s (expected False), of "
+                     "the plate at open yMax %s (expected True), of the rod "
+                     "near open xMax %s (expected %s)"
+                     % (h, v, written, w_cells, coarse, w_fail, fast,
+                        w_steel, w_plate, w_rod, coarse))
+
+
 def check_cuts_and_gap():
     # Two boxes overlapping by 2 x 2 x 1 mm^3 (planar, per unit depth:
     # 2 x 2 mm^2); the later one cuts the earlier
@@ -774,6 +822,7 @@ def main():
         checks.exit()
     os.makedirs(RUN, exist_ok=True)
     check_errors()
+    check_warnings()
     check_cuts_and_gap()
     try:
         check_radial_velocity()

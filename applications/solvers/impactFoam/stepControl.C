@@ -199,9 +199,58 @@ bool Foam::stepControl::accept
     FatalErrorInFunction
         << "Unphysical state at time " << failedTime << where.str().c_str()
         << nl << "    The last good fields were written at time "
-        << runTime_.timeName() << exit(FatalError);
+        << runTime_.timeName()
+        << (err.failed ? advice(err).c_str() : "") << exit(FatalError);
 
     return false;
+}
+
+
+std::string Foam::stepControl::advice
+(
+    const mechanicalRelaxation::stateError& err
+) const
+{
+    const phaseModel& phase = phases_[err.phase];
+    const word& name = phases_.names()[err.phase];
+    const bool solid = phase.law().solid();
+    OStringStream os;
+    os  << nl << "    The state of every phase in that cell at that time is in"
+        << " the written fields (alpha.<phase>, rho.<phase>, p.<phase>, U)."
+        << nl << "    What may help:";
+    if (solid && err.quantity == "p" && err.value < 0)
+    {
+        if (!phase.inelastic().limitsTension())
+        {
+            os  << nl << "    - phase " << name << " holds any tension: give it"
+                << " a failure model (failure { type spall; sigmaSpall ...; }"
+                << " in its material or in impactDict's phaseProperties,"
+                << " docs/model.md section 11)";
+        }
+        os  << nl << "    - a finer mesh where the bodies meet (impactDict's"
+            << " cellSize, or ./Allrun -h): the tension comes from cells"
+            << " that mix " << name << " with another material";
+    }
+    else if (err.quantity.find("rhoMax") != std::string::npos)
+    {
+        os  << nl << "    - a smaller maxCo in system/controlDict (0.3): "
+            << name << " was compressed beyond the pole of its equation of"
+            << " state within one step";
+    }
+    else if (err.quantity.find("interface pressure") != std::string::npos)
+    {
+        os  << nl << "    - a finer mesh where the bodies meet: the phases of"
+            << " that cell could not be brought to one pressure";
+    }
+    else
+    {
+        os  << nl << "    - a smaller maxCo in system/controlDict (0.3)";
+    }
+    os  << nl << "    - fallbackRounds (discreteEquations in system/fvSchemes,"
+        << " default 3) and minDeltaTFactor (system/controlDict, default"
+        << " 1/64): more first-order rounds and retries before the run"
+        << " stops (docs/numerics.md section 8.3)";
+    return std::string(os.str());
 }
 
 

@@ -5,6 +5,8 @@
 #include "interfacePressure.H"
 #include "interfaceRoot.H"
 
+#include <cmath>
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::interfacePressure::interfacePressure(const phaseSystem& phases)
@@ -49,23 +51,32 @@ Foam::scalar Foam::interfacePressure::relaxedVolume
         dvdp = 0;
         return eos.vRelaxed(cell.pHeld[k], 1/cell.v[k], cell.e[k]);
     }
-    // A metal expands no further than its lowest density (half its
-    // reference density, mechanicalRelaxation::compactMetals): beyond it
-    // it takes no more volume and no more work from a tension of the cell
-    // (a phase already beyond it, the cell's largest that compactMetals
-    // leaves alone, is not compressed to it). Its path reaches that volume
-    // above the lowest pressure of the path, where v grows without bound
+    // In tension a metal expands no further than its lowest density (half
+    // its reference density, mechanicalRelaxation::compactMetals), or its
+    // volume at p = 0 where that is larger (a hot metal): it takes no more
+    // volume and no more work from a tension of the cell. A phase already
+    // beyond it (the cell's largest, which compactMetals leaves alone) is
+    // not compressed to it. The path reaches that volume above its lowest
+    // pressure, where v grows without bound
+    const scalar rho = 1/cell.v[k];
     const scalar vMax = max(cell.vMax[k], cell.v[k]);
-    if (vMax < VGREAT && !(pStar > cell.pLowest[k]))
+    const bool capped = vMax < VGREAT && cell.pLowest[k] < 0;
+    if (capped && !(pStar > cell.pLowest[k]))
     {
+        scalar dv0;
         dvdp = 0;
-        return vMax;
+        return max(vMax, eos.vRelaxed(0, rho, cell.e[k], dv0));
     }
-    const scalar v = eos.vRelaxed(pStar, 1/cell.v[k], cell.e[k], dvdp);
-    if (v > vMax)
+    const scalar v = eos.vRelaxed(pStar, rho, cell.e[k], dvdp);
+    if (capped && pStar < 0 && v > vMax)
     {
-        dvdp = 0;
-        return vMax;
+        scalar dv0;
+        const scalar vCap = max(vMax, eos.vRelaxed(0, rho, cell.e[k], dv0));
+        if (v > vCap)
+        {
+            dvdp = 0;
+            return vCap;
+        }
     }
     return v;
 }
@@ -88,7 +99,19 @@ bool Foam::interfacePressure::solve
     {
         if (cell.trace[k]) continue;
         const equationOfState& eos = phases_.phase(k).eos();
-        const scalar pk = eos.p(1/cell.v[k], cell.e[k]);
+        // A phase outside its equation of state's range has no path (its
+        // primitives give NaN, and comparing a NaN traps under
+        // FOAM_SIGFPE): no root, the check fails
+        const scalar rhoK = 1/cell.v[k];
+        if (!(rhoK > 0 && rhoK < eos.rhoMax()))
+        {
+            return false;
+        }
+        const scalar pk = eos.p(rhoK, cell.e[k]);
+        if (!std::isfinite(pk))
+        {
+            return false;
+        }
         const pressureRelaxationPath& path = phases_.relaxationPath(k);
         const scalar pPath =
             cell.isentropic[k]
@@ -98,7 +121,7 @@ bool Foam::interfacePressure::solve
         const bool held =
             (cell.isentropic[k] && path.cavitationPressure() > pPath)
          || (cell.held[k] && cell.pHeld[k] > pPath)
-         || cell.vMax[k] < VGREAT;
+         || (cell.vMax[k] < VGREAT && pPath < 0);
         if (!held)
         {
             // v_k(p) grows without bound as p -> pPath

@@ -8,6 +8,7 @@ using Foam::foamEigen::toTensor;
 
 
 
+
 Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
 :
     phases_(phases),
@@ -215,11 +216,14 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
         const label main = floorVolumeFractions(c, q);
         cobasis::vector mom;
         const scalar mass = collectMasses(c, q, mom);
-        compactMetals(c, main);
 
         // 2. One velocity; the cobasis made compatible with the density
         const cobasis::vector u(mom/mass);
         relaxVelocity(c, q, u);
+
+        // A minor metal below its lowest density compacted to it, the
+        // volume exchanged with the main phase at its pressure
+        compactMetals(c, q, main);
 
         // A minor phase whose energy the step left inadmissible is reset
         // as a trace, a torn gas floored (pVacuum); any other phase fails

@@ -10,6 +10,8 @@ Description
 #include "mechanicalRelaxation.H"
 #include "alphaClosure.H"
 
+#include <cmath>
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::label Foam::mechanicalRelaxation::floorVolumeFractions
@@ -159,13 +161,14 @@ Foam::scalar Foam::mechanicalRelaxation::collectMasses
 void Foam::mechanicalRelaxation::compactMetals
 (
     const label c,
+    conservedState& q,
     const label main
 )
 {
     for (label k = 0; k < nPhases_; ++k)
     {
         const scalar vMax = cell_.vMax[k];
-        if (k == main || !(cell_.alpha[k] > vMax*cell_.m[k]))
+        if (k == main || !(cell_.v[k] > vMax))
         {
             continue;
         }
@@ -176,15 +179,36 @@ void Foam::mechanicalRelaxation::compactMetals
         // mass (steel at 0.07 rho0 and alpha 0.0075 in an air cell beside
         // an oblique impact, at -2e12 Pa, where its Mie-Grueneisen pressure
         // swings by 1e12 Pa for a one-per-mille change of density). The
-        // metal takes its lowest density, half the reference density, at
-        // its specific energy, the volume going to the cell's largest
-        // phase: only volumes change, the energy is conserved. Not to the
-        // reference density: the pressure relaxation would then expand it
-        // again under a tension of the cell and hand it the work of that
-        // expansion, step after step (a minor aluminium phase in a
-        // tungsten rod's nose cell heated to 1e11 J/kg, the rod cooled
-        // below absolute zero and stretched to -1.8e11 Pa)
+        // metal takes its lowest density, half the reference density, the
+        // volume going to the cell's largest phase, exchanged at that
+        // phase's pressure: each phase does the work -p dv, so the
+        // energy is conserved and neither phase gains by the exchange.
+        // At fixed energies instead, a minor metal under a tension of the
+        // cell, compacted here and expanded again by the pressure
+        // relaxation (which hands it the work of the expansion), pumped
+        // energy from the main phase step after step (a tungsten rod's
+        // nose cooled below absolute zero and stretched to -1.8e11 Pa,
+        // the aluminium sliver beside it at 1e11 J/kg)
+        const scalar pMain =
+            phases_.phase(main).eos().p(1/cell_.v[main], cell_.e[main]);
+        if (!std::isfinite(pMain))
+        {
+            continue;
+        }
         const scalar dAlpha = cell_.m[k]*vMax - cell_.alpha[k];
+        const scalar vMain = (cell_.alpha[main] - dAlpha)/cell_.m[main];
+        cell_.e[k] -= pMain*(vMax - cell_.v[k]);
+        cell_.e[main] -= pMain*(vMain - cell_.v[main]);
+        for (const label j : {k, main})
+        {
+            const scalar vNew = j == k ? vMax : vMain;
+            if (phases_.phase(j).solid())
+            {
+                // The unimodular part (and the elastic energy) kept
+                q.A[j][c] *= std::cbrt(cell_.v[j]/vNew);
+            }
+            cell_.v[j] = vNew;
+        }
         cell_.alpha[k] += dAlpha;
         cell_.alpha[main] -= dAlpha;
     }

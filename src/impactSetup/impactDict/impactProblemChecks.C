@@ -36,6 +36,13 @@ void Foam::impactProblem::checkInside
             {
                 continue;
             }
+            // An open (zero-gradient) patch copies the cell's state into
+            // the face problem: a body within a cell of it draws its own
+            // material in wherever it moves away from the patch
+            const bool open =
+                hasDomain_ && patchKinds_.found(pp.name())
+             && patchKinds_[pp.name()] == "open";
+            bool nearOpen = false;
             forAll(pp, facei)
             {
                 const face& f = pp[facei];
@@ -52,6 +59,9 @@ void Foam::impactProblem::checkInside
                 }
                 q /= f.size();
                 const scalar size = Foam::sqrt(pp.magFaceAreas()[facei]);
+                nearOpen =
+                    nearOpen
+                 || (open && b.effectiveDistance(q) < 1.5*cellSize_);
                 if (b.effectiveDistance(q) < -1e-6*size)
                 {
                     FatalIOErrorInFunction
@@ -64,6 +74,105 @@ void Foam::impactProblem::checkInside
                         << meshBounds << exit(FatalIOError);
                 }
             }
+            if (nearOpen)
+            {
+                WarningInFunction
+                    << b.owner().c_str() << " lies within a cell of the open"
+                    << " patch " << pp.name() << ": a zero-gradient boundary"
+                    << " copies the cell's state into the face problem, so"
+                    << " wherever the body moves away from the patch its own"
+                    << " material flows in and the body grows. Make the"
+                    << " domain larger there, or the patch a wall, unless"
+                    << " the body is meant to continue beyond it (a"
+                    << " semi-infinite target)." << endl;
+            }
+        }
+    }
+}
+
+
+void Foam::impactProblem::warnResolution() const
+{
+    if (!hasDomain_)
+    {
+        // A mesh of the user's own: no one cell size to judge by
+        return;
+    }
+    forAll(bodies_, i)
+    {
+        const impactBody& b = bodies_[i];
+        if (!b.shape().bounded())
+        {
+            continue;
+        }
+        // The smallest extent in the directions that are meshed (x and y
+        // in the meridian or planar plane, z too in 3-D), within the domain
+        const boundBox bb(b.bounds());
+        const label nDir = geometry_ == "threeD" ? 3 : 2;
+        scalar smallest = GREAT;
+        for (label d = 0; d < nDir; ++d)
+        {
+            const scalar lo = max(bb.min()[d], min_[d]);
+            const scalar hi = min(bb.max()[d], max_[d]);
+            smallest = min(smallest, hi - lo);
+        }
+        const scalar across = smallest/cellSize_;
+        if (across < 3)
+        {
+            WarningInFunction
+                << b.owner().c_str() << " is " << across << " cells across"
+                << " its smallest extent (" << smallest << " m at cellSize "
+                << cellSize_ << " m): fewer than 3, too few to resolve it."
+                << " Lengths are in metres (cellSize 0.25 is 25 cm; 0.25 mm"
+                << " is 0.25e-3)." << endl;
+        }
+    }
+}
+
+
+void Foam::impactProblem::warnFailure() const
+{
+    // The largest speed at which two bodies meet
+    scalar speed = 0;
+    forAll(bodies_, i)
+    {
+        forAll(bodies_, j)
+        {
+            speed = max(speed, mag(bodies_[i].U - bodies_[j].U));
+        }
+    }
+    if (speed < 1000)
+    {
+        return;
+    }
+    for (const word& phase : phases_)
+    {
+        if (!phaseDicts_.found(phase))
+        {
+            continue;
+        }
+        dictionary pd(phaseDicts_[phase]);
+        if (phaseProperties_.isDict(phase))
+        {
+            pd.merge(phaseProperties_.subDict(phase));
+        }
+        if (pd.getOrDefault<word>("type", "fluid") != "solid")
+        {
+            continue;
+        }
+        const bool failure =
+            pd.isDict("failure")
+         && pd.subDict("failure").getOrDefault<word>("type", "none") != "none";
+        if (!failure)
+        {
+            WarningInFunction
+                << "Phase " << phase << " (material " << phaseMaterials_[phase]
+                << ") is a solid without a failure model, and bodies meet at "
+                << speed << " m/s: it will hold any tension its cells reach,"
+                << " where a real metal spalls. Give it one if it may fail"
+                << " (phaseProperties { " << phase << " { failure { type"
+                << " spall; sigmaSpall ...; } } } in impactDict;"
+                << " docs/model.md section 11)." << endl;
         }
     }
 }

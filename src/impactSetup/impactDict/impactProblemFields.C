@@ -146,6 +146,8 @@ void Foam::impactProblem::setFields(const fvMesh& mesh)
 
     checkInside(mesh, alpha);
     checkOverlaps(cut, alpha);
+    warnResolution();
+    warnFailure();
 
     // The ambient fills the rest (bodies summing above 1 by round-off are
     // scaled back)
