@@ -7,8 +7,6 @@
 using Foam::foamEigen::toTensor;
 
 
-
-
 Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
 :
     phases_(phases),
