@@ -55,8 +55,8 @@ Foam::scalar Foam::interfacePressure::relaxedVolume
     // its reference density, mechanicalRelaxation::compactMetals), or its
     // volume at p = 0 where that is larger (a hot metal): it takes no more
     // volume and no more work from a tension of the cell. A phase already
-    // beyond it (the cell's largest, which compactMetals leaves alone) is
-    // not compressed to it. The path reaches that volume above its lowest
+    // beyond it (the cell's largest, which compactMetals leaves alone, or
+    // one it brings back over several steps) is not compressed to it. The path reaches that volume above its lowest
     // pressure, where v grows without bound
     const scalar rho = 1/cell.v[k];
     const scalar vMax = max(cell.vMax[k], cell.v[k]);
