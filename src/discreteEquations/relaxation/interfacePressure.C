@@ -56,18 +56,16 @@ Foam::scalar Foam::interfacePressure::relaxedVolume
     // volume at p = 0 where that is larger (a hot metal): it takes no more
     // volume and no more work from a tension of the cell. A phase already
     // beyond it (the cell's largest, which compactMetals leaves alone, or
-    // one it brings back over several steps) is not compressed to it. The path reaches that volume above its lowest
-    // pressure, where v grows without bound
+    // one it brings back over several steps) is not compressed to it. At
+    // or below the lowest pressure of its path (where v grows without
+    // bound) it is at the cap
     const scalar rho = 1/cell.v[k];
     const scalar vMax = max(cell.vMax[k], cell.v[k]);
     const bool capped = vMax < VGREAT && cell.pLowest[k] < 0;
-    if (capped && !(pStar > cell.pLowest[k]))
-    {
-        scalar dv0;
-        dvdp = 0;
-        return max(vMax, eos.vRelaxed(0, rho, cell.e[k], dv0));
-    }
-    const scalar v = eos.vRelaxed(pStar, rho, cell.e[k], dvdp);
+    const scalar v =
+        capped && !(pStar > cell.pLowest[k])
+      ? VGREAT
+      : eos.vRelaxed(pStar, rho, cell.e[k], dvdp);
     if (capped && pStar < 0 && v > vMax)
     {
         scalar dv0;
