@@ -22,6 +22,7 @@ Foam::demFaceAssembly::demFaceAssembly
 :
     phases_(phases),
     nPhases_(phases.size()),
+    contacts_(phases.contacts()),
     riemann_(riemannSolver::New(dict)),
     fallbackRiemann_(riemannSolver::New(fallbackDict())),
     sums_(nPhases_),
@@ -64,18 +65,37 @@ void Foam::demFaceAssembly::limitFailedTension
         inelastic->pFloor(sl.carried),
         inelastic->pFloor(sr.carried)
     );
-    if (!(floor > -GREAT))
+    if (floor > -GREAT)
     {
-        return;
+        floorTension(floor, sol);
     }
+}
+
+
+void Foam::demFaceAssembly::floorTension
+(
+    const double pFloor,
+    riemannSolution& sol
+)
+{
     // Normal traction t*_n = -p* in the face frame
-    const double excess = floor + sol.tStar(0);
+    const double excess = pFloor + sol.tStar(0);
     if (excess > 0)
     {
         sol.tStar(0) -= excess;
         sol.momentumFlux(0) += excess;
         sol.energyFlux += excess*sol.uStar;
     }
+}
+
+
+double Foam::demFaceAssembly::shearStrength
+(
+    const label k,
+    const phaseSide& s
+) const
+{
+    return phases_[k].inelastic().shearStrength(s.carried, s.rho, s.p);
 }
 
 
@@ -99,6 +119,7 @@ Foam::riemannState Foam::demFaceAssembly::faceFrameState
         withG
       ? phases_.phase(k).eos().fundamentalDerivative(s.rho, s.p)
       : 0;
+    K.strength = GREAT;
     K.solid = s.solid;
     return K;
 }
@@ -207,18 +228,33 @@ void Foam::demFaceAssembly::solveFace
                     K, sol.massFlux, sol.momentumFlux, sol.energyFlux
                 );
             }
-            else
+            else if (k == j)
             {
                 sol = solver.solve
                 (
                     faceFrameState(k, sl, R, n, withG),
                     faceFrameState(j, sr, R, n, withG),
-                    k == j
+                    true
                 );
-            }
-            if (k == j)
-            {
                 limitFailedTension(k, sl, sr, sol);
+            }
+            else
+            {
+                // Two different solids that may slide: their contact law
+                // caps the shear traction, and they hold no tension
+                const contactLaw* contact = contacts_.law(k, j);
+                riemannState stL(faceFrameState(k, sl, R, n, withG));
+                riemannState stR(faceFrameState(j, sr, R, n, withG));
+                if (contact && contact->usesStrength())
+                {
+                    stL.strength = shearStrength(k, sl);
+                    stR.strength = shearStrength(j, sr);
+                }
+                sol = solver.solve(stL, stR, false, contact);
+                if (contact)
+                {
+                    floorTension(0, sol);
+                }
             }
 
             uFace += S*sol.uStar;

@@ -89,6 +89,7 @@ void Foam::phaseSystem::checkKeywords() const
 {
     wordList valid(phaseRegimes::keywords);
     valid.append("phases");
+    valid.append("contacts");
     valid.append(phaseNames_);
     for (const Pair<word>& removed : phaseRegimes::removedKeywords)
     {
@@ -234,6 +235,13 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
             }
         }
         regimes_.setReferenceDensities(rho0Solid);
+
+        boolList solid(phases_.size());
+        forAll(phases_, k)
+        {
+            solid[k] = phase(k).solid();
+        }
+        contacts_.reset(new solidContacts(dict_, phaseNames_, solid));
     }
 
     // Field files of the carried variables that name no phase
@@ -278,6 +286,7 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
         }
         Info<< nl;
     }
+    contacts_->describe(Info, phaseNames_);
     Info<< endl;
 }
 

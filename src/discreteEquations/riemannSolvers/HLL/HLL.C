@@ -28,7 +28,8 @@ Foam::riemannSolution Foam::riemannSolvers::HLL::solve
 (
     const riemannState& L,
     const riemannState& R,
-    const bool sameMaterial
+    const bool sameMaterial,
+    const contactLaw* contact
 ) const
 {
     const double uL = L.v(0);
@@ -48,7 +49,7 @@ Foam::riemannSolution Foam::riemannSolvers::HLL::solve
 
     // The contact (HLLC's for these bounds): u*, t*, v*; and, between two
     // materials, the flux of the upwind side's star state
-    riemannSolution sol(HLLC::starSolution(L, R, SL, SR));
+    riemannSolution sol(HLLC::starSolution(L, R, SL, SR, contact));
     if (!sameMaterial)
     {
         return sol;

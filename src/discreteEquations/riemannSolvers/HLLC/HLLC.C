@@ -88,7 +88,8 @@ Foam::riemannSolution Foam::riemannSolvers::HLLC::solve
 (
     const riemannState& L,
     const riemannState& R,
-    const bool
+    const bool,
+    const contactLaw* contact
 ) const
 {
     const double uL = L.v(0);
@@ -122,7 +123,7 @@ Foam::riemannSolution Foam::riemannSolvers::HLLC::solve
         SR = uR + qR*R.a;
     }
 
-    return starSolution(L, R, SL, SR);
+    return starSolution(L, R, SL, SR, contact);
 }
 
 
@@ -131,7 +132,8 @@ Foam::riemannSolution Foam::riemannSolvers::HLLC::starSolution
     const riemannState& L,
     const riemannState& R,
     double SL,
-    double SR
+    double SR,
+    const contactLaw* contact
 )
 {
     const double uL = L.v(0);
@@ -169,6 +171,16 @@ Foam::riemannSolution Foam::riemannSolvers::HLLC::starSolution
             sol.tStar(j) =
                 (mtR*L.s(j) - mtL*R.s(j) + mtL*mtR*(R.v(j) - L.v(j)))
                /guard(mtR - mtL);
+        }
+        if (contact)
+        {
+            // Two solids that may slide: the shear traction capped at
+            // the law's limit at this normal traction (each side's star
+            // velocity follows from it)
+            contact->limitShear
+            (
+                sol.tStar, L.strength < R.strength ? L.strength : R.strength
+            );
         }
     }
     else

@@ -199,6 +199,27 @@ Foam::scalar Foam::inelasticModels::plasticityAndFailure::relax
 }
 
 
+Foam::scalar Foam::inelasticModels::plasticityAndFailure::shearStrength
+(
+    const scalar* carried,
+    const scalar rho,
+    const scalar p
+) const
+{
+    if (failed(carried))
+    {
+        return 0;
+    }
+    if (iEps_ < 0)
+    {
+        return GREAT;
+    }
+    const equationOfState& eos = law_.eos();
+    const scalar T = needsT_ ? eos.T(rho, eos.e(rho, p)) : 0;
+    return plastic_->sigmaY(carried[iEps_], 0, T)/std::sqrt(3.0);
+}
+
+
 bool Foam::inelasticModels::plasticityAndFailure::predict
 (
     cobasis::matrix& A,
