@@ -1,6 +1,7 @@
 #include "demFaceAssembly.H"
 #include "faceFrame.H"
 #include "contactFractions.H"
+#include "primitiveEntry.H"
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
 
@@ -23,6 +24,7 @@ Foam::demFaceAssembly::demFaceAssembly
     phases_(phases),
     nPhases_(phases.size()),
     contacts_(phases.contacts()),
+    frictionless_(contactLaw::New(primitiveEntry("frictionless", word("frictionless")), "demFaceAssembly")),
     riemann_(riemannSolver::New(dict)),
     fallbackRiemann_(riemannSolver::New(fallbackDict())),
     sums_(nPhases_),
@@ -41,6 +43,14 @@ Foam::demFaceAssembly::demFaceAssembly
             inelastic.limitsTension() ? &inelastic : nullptr;
         stride_[k] = iCarried + phases[k].nCarried();
         sums_[k].resize(nCells*stride_[k]);
+    }
+    if (phases.sliding())
+    {
+        contactSums_.resize(nPhases_);
+        for (auto& sums : contactSums_)
+        {
+            sums.resize(nCells);
+        }
     }
 }
 
@@ -134,6 +144,10 @@ void Foam::demFaceAssembly::reset()
     {
         std::fill(sums_[k].begin(), sums_[k].end(), 0.0);
     }
+    for (auto& sums : contactSums_)
+    {
+        std::fill(sums.begin(), sums.end(), cobasis::vector::Zero());
+    }
 
     // The time-centred cell states of the last step are stale
     // (allocated for the cells that hold an internal contact only)
@@ -173,6 +187,8 @@ void Foam::demFaceAssembly::solveFace
         }
         fc.vStarSum.setZero();
         fc.vStarWeight = 0;
+        fc.dContact[0].setZero();
+        fc.dContact[1].setZero();
     }
 
     const auto alphaL = [&sideL](const int k) { return sideL[k].alpha; };
@@ -211,6 +227,8 @@ void Foam::demFaceAssembly::solveFace
             }
 
             riemannSolution sol;
+            const contactLaw* contact =
+                k != j ? contacts_.law(k, j) : nullptr;
             if (identical)
             {
                 // Equal states (then k == j): the consistent solution
@@ -242,7 +260,6 @@ void Foam::demFaceAssembly::solveFace
             {
                 // Two different solids that may slide: their contact law
                 // caps the shear traction, and they hold no tension
-                const contactLaw* contact = contacts_.law(k, j);
                 riemannState stL(faceFrameState(k, sl, R, n, withG));
                 riemannState stR(faceFrameState(j, sr, R, n, withG));
                 if (contact && contact->usesStrength())
@@ -250,7 +267,20 @@ void Foam::demFaceAssembly::solveFace
                     stL.strength = shearStrength(k, sl);
                     stR.strength = shearStrength(j, sr);
                 }
-                sol = solver.solve(stL, stR, false, contact);
+                // Where a side holds both solids (the interface is inside
+                // that cell) the velocity relaxation there applies the
+                // law's friction; the face then transmits none, or the two
+                // would add up
+                const bool inCell =
+                    contact
+                 && (
+                        (!sl.trace && !sideL[j].trace)
+                     || (!sr.trace && !sideR[k].trace)
+                    );
+                sol = solver.solve
+                (
+                    stL, stR, false, inCell ? frictionless_.get() : contact
+                );
                 if (contact)
                 {
                     floorTension(0, sol);
@@ -304,6 +334,17 @@ void Foam::demFaceAssembly::solveFace
                     faceResult_[invaded].dMomentum[c] += Sw*tc;
                     faceResult_[up].dEnergy[c] -= Sw*work;
                     faceResult_[invaded].dEnergy[c] += Sw*work;
+
+                    if (contact)
+                    {
+                        // The tractions' part of the momentum: the flux's
+                        // -t* (out of side 0, into side 1) and the
+                        // Lagrangian part's
+                        faceResult_[up].dContact[0] += Sw*tStar;
+                        faceResult_[up].dContact[1] -= Sw*tStar;
+                        faceResult_[up].dContact[c] -= Sw*tc;
+                        faceResult_[invaded].dContact[c] += Sw*tc;
+                    }
                 }
             };
 
@@ -416,6 +457,10 @@ void Foam::demFaceAssembly::addToCell
         {
             s[iCarried + i] += magSf*fc.dMassCarried[side][i];
         }
+        if (!contactSums_.empty())
+        {
+            contactSums_[k][c] += magSf*fc.dContact[side];
+        }
     }
 }
 
@@ -502,6 +547,10 @@ void Foam::demFaceAssembly::internalContacts
             s[iMomentum + j] += magSf*(fc.dMomentum[0](j) + fc.dMomentum[1](j));
         }
         s[iEnergy] += magSf*(fc.dEnergy[0] + fc.dEnergy[1]);
+        if (!contactSums_.empty())
+        {
+            contactSums_[k][c] += magSf*(fc.dContact[0] + fc.dContact[1]);
+        }
     }
 }
 

@@ -267,6 +267,7 @@ void Foam::demSolver::newState(const scalar dt, conservedState& q) const
     q.energy.resize(nPhases_);
     q.A.resize(nPhases_);
     q.carried.resize(nPhases_);
+    q.contactMomentum.resize(assembly_.sumsContacts() ? nPhases_ : 0);
 
     for (label k = 0; k < nPhases_; ++k)
     {
@@ -274,6 +275,10 @@ void Foam::demSolver::newState(const scalar dt, conservedState& q) const
         q.mass[k].resize(nCells);
         q.momentum[k].resize(nCells);
         q.energy[k].resize(nCells);
+        if (!q.contactMomentum.empty())
+        {
+            q.contactMomentum[k].resize(nCells);
+        }
         q.carried[k].resize(phases_[k].nCarried());
         for (auto& v : q.carried[k])
         {
@@ -289,6 +294,7 @@ void Foam::demSolver::newState(const scalar dt, conservedState& q) const
         const tensorField* A = phases_.cellCobasis(k);
         const phaseModel& phase = phases_[k];
         const label nCarried = phase.nCarried();
+        const bool slips = phase.carriesSlip();
 
         for (label c = 0; c < nCells; ++c)
         {
@@ -297,8 +303,14 @@ void Foam::demSolver::newState(const scalar dt, conservedState& q) const
             q.alpha[k][c] = alpha[c] + dtByV*assembly_.dAlpha(k, c);
             q.mass[k][c] = m + dtByV*assembly_.dMass(k, c);
             q.momentum[k][c] =
-                m*toEigen(U[c]) + dtByV*assembly_.dMomentum(k, c);
+                m*toEigen(slips ? U[c] + phase.slip(c) : U[c])
+              + dtByV*assembly_.dMomentum(k, c);
             q.energy[k][c] = m*cells_.E(k, c) + dtByV*assembly_.dEnergy(k, c);
+            if (!q.contactMomentum.empty())
+            {
+                q.contactMomentum[k][c] =
+                    dtByV*assembly_.dContactMomentum(k, c);
+            }
 
             // Carried variables per unit mass: the upwind values carried
             // by the mass fluxes, kept within their bounds (a phase left
@@ -357,6 +369,10 @@ void Foam::demSolver::prepare()
     // them after every change of the fields (construction, end of a step,
     // restored state)
     cells_.update();
+
+    // Where solids that may slide meet (their velocity relaxation and
+    // the reconstruction's first-order velocity there)
+    phases_.updateSliding();
 }
 
 

@@ -87,7 +87,8 @@ Foam::phaseModel::phaseModel
     const dictionary& dict,
     const volScalarField& pMixture,
     const wordList& derivedTypes,
-    const wordList& mirrorTypes
+    const wordList& mirrorTypes,
+    const bool carriesSlip
 )
 :
     index_(index),
@@ -206,6 +207,19 @@ Foam::phaseModel::phaseModel
     )
     {
         carriedInfo_.append(carriedVariable(tracer, dimless));
+    }
+    // The slip velocity of a case where solids slide on each other: every
+    // phase's velocity less the cell's, set by the velocity relaxation
+    // (carried so that the face states, the processor exchange, the
+    // restart and the retried step have it)
+    iSlip_ = -1;
+    if (carriesSlip)
+    {
+        iSlip_ = carriedInfo_.size();
+        for (const word& component : {"slipUx", "slipUy", "slipUz"})
+        {
+            carriedInfo_.append(carriedVariable(component, dimVelocity));
+        }
     }
     if (carriedInfo_.size() > maxCarried)
     {

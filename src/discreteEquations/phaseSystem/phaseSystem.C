@@ -198,6 +198,10 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
     const wordList derivedTypes(boundaryKinds::derivedPatchTypes(mesh));
     const wordList mirrorTypes(boundary_.cobasisPatchTypes(mesh));
 
+    // Where solids may slide on each other, every phase carries a slip
+    // velocity (phaseModel::slip)
+    const bool carriesSlip = solidContacts::slides(dict_);
+
     phases_.setSize(phaseNames_.size());
     forAll(phaseNames_, k)
     {
@@ -220,7 +224,8 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
             k,
             new phaseModel
             (
-                k, name, phaseDict, pMixture_, derivedTypes, mirrorTypes
+                k, name, phaseDict, pMixture_, derivedTypes, mirrorTypes,
+                carriesSlip
             )
         );
     }
@@ -242,6 +247,16 @@ Foam::phaseSystem::phaseSystem(const fvMesh& mesh)
             solid[k] = phase(k).solid();
         }
         contacts_.reset(new solidContacts(dict_, phaseNames_, solid));
+        if (contacts_->any())
+        {
+            sliding_.reset
+            (
+                new slidingInterfaces
+                (
+                    mesh, contacts_(), regimes_, phases_.size()
+                )
+            );
+        }
     }
 
     // Field files of the carried variables that name no phase
@@ -300,6 +315,21 @@ void Foam::phaseSystem::correctBoundaryConditions()
         phase.correctBoundaryConditions();
     }
     correctBoundaryConditionsInPlace(U_);
+}
+
+
+void Foam::phaseSystem::updateSliding()
+{
+    if (!sliding_.valid())
+    {
+        return;
+    }
+    UPtrList<const volScalarField> alphas(phases_.size());
+    forAll(phases_, k)
+    {
+        alphas.set(k, &phases_[k].alpha());
+    }
+    sliding_->update(alphas);
 }
 
 

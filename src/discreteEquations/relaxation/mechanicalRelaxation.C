@@ -17,7 +17,9 @@ Foam::mechanicalRelaxation::mechanicalRelaxation(phaseSystem& phases)
     cell_(nPhases_),
     pressure_(phases),
     ledger_(phases.mesh().V()),
-    checks_()
+    checks_(),
+    uSlide_(nPhases_),
+    slideHeat_(nPhases_, 0)
 {
     for (label k = 0; k < nPhases_; ++k)
     {
@@ -66,9 +68,11 @@ void Foam::mechanicalRelaxation::relaxVelocity
 (
     const label c,
     conservedState& q,
-    const cobasis::vector& u
+    const cobasis::vector& u,
+    const scalar dt
 )
 {
+    const bool slid = slideVelocities(c, q, u, dt);
     for (label k = 0; k < nPhases_; ++k)
     {
         const hyperelasticPhase& ph = phases_.phase(k);
@@ -103,9 +107,29 @@ void Foam::mechanicalRelaxation::relaxVelocity
         // Own kinetic energy out, the share of the dissipated kinetic
         // energy 1/2 |u_k - u|^2 in: e_k never decreases
         const cobasis::vector uk(q.momentum[k][c]/cell_.m[k]);
-        cell_.e[k] =
-            q.energy[k][c]/cell_.m[k] - 0.5*uk.squaredNorm()
-          + 0.5*(uk - u).squaredNorm() - cell_.ee[k];
+        if (slid)
+        {
+            cell_.e[k] =
+                q.energy[k][c]/cell_.m[k] - 0.5*uk.squaredNorm()
+              + slideHeat_[k] - cell_.ee[k];
+        }
+        else
+        {
+            cell_.e[k] =
+                q.energy[k][c]/cell_.m[k] - 0.5*uk.squaredNorm()
+              + 0.5*(uk - u).squaredNorm() - cell_.ee[k];
+        }
+
+        // The slip velocity kept (phaseModel::slip; the relaxation's
+        // store writes it with the other carried variables)
+        const label iSlip = phases_[k].slipIndex();
+        if (iSlip >= 0)
+        {
+            for (int d = 0; d < 3; ++d)
+            {
+                q.carried[k][iSlip + d][c] = slid ? uSlide_[k](d) - u(d) : 0;
+            }
+        }
     }
 }
 
@@ -217,7 +241,7 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
 
         // 2. One velocity; the cobasis made compatible with the density
         const cobasis::vector u(mom/mass);
-        relaxVelocity(c, q, u);
+        relaxVelocity(c, q, u, dt);
 
         // A minor metal below its lowest density compacted to it, the
         // volume exchanged with the main phase at its pressure

@@ -299,6 +299,7 @@ void Foam::impactProblem::readPhaseProperties()
     phaseProperties_ =
         subDict(dict_, "phaseProperties", "impactDict");
     wordList valid(phaseRegimes::keywords);
+    valid.append("contacts");
     valid.append(phases_);
     OStringStream owner;
     owner << "impactDict phaseProperties (the phases";
@@ -339,7 +340,10 @@ Foam::impactProblem::impactProblem
     checkKeywords
     (
         dict_,
-        {"geometry", "domain", "ambient", "bodies", "phaseProperties"},
+        {
+            "geometry", "domain", "ambient", "bodies", "phaseProperties",
+            "contacts"
+        },
         "impactDict"
     );
     readDomain();

@@ -1,4 +1,5 @@
 #include "impactProblem.H"
+#include "solidContacts.H"
 #include "cutCellFractions.H"
 #include "volFields.H"
 #include "wallPolyPatch.H"
@@ -78,16 +79,40 @@ void Foam::impactProblem::writePhaseProperties()
             out.add(e.clone(out).ptr());
         }
     }
-    for (const word& phase : phases_)
+    // The contact laws between the bodies' solids: impactDict's contacts
+    // (or its phaseProperties'), checked against the phases here
+    if (dict_.found("contacts", keyType::LITERAL))
     {
+        if (out.found("contacts", keyType::LITERAL))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "impactDict: contacts given both at the top level and in"
+                << " phaseProperties; keep one" << exit(FatalIOError);
+        }
+        if (!dict_.isDict("contacts"))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "impactDict: contacts must be a dictionary (a default"
+                << " and <phase>.<phase> entries)" << exit(FatalIOError);
+        }
+        out.add("contacts", dict_.subDict("contacts"));
+    }
+    boolList solid(phases_.size());
+    forAll(phases_, k)
+    {
+        const word& phase = phases_[k];
         dictionary pd;
         pd.add("material", phaseMaterials_[phase]);
         if (phaseProperties_.isDict(phase))
         {
             phaseMaterial::mergeOnto(pd, phaseProperties_.subDict(phase));
         }
+        solid[k] =
+            phaseMaterial::phaseDict(phase, pd, runTime_)
+           .lookupOrDefault<word>("type", "fluid") == "solid";
         out.add(phase, pd);
     }
+    solidContacts(out, phases_, solid);
 
     autoPtr<OFstream> os
     (

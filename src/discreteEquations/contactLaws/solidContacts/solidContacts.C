@@ -125,6 +125,25 @@ Foam::solidContacts::solidContacts
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+bool Foam::solidContacts::slides(const dictionary& phaseProperties)
+{
+    const dictionary* dictPtr = phaseProperties.findDict("contacts");
+    if (!dictPtr)
+    {
+        return false;
+    }
+    for (const entry& e : *dictPtr)
+    {
+        const word owner("phaseProperties contacts " + e.keyword());
+        if (!contactLaw::New(e, owner)->sticks())
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
 void Foam::solidContacts::describe
 (
     Ostream& os,

@@ -273,7 +273,7 @@ void Foam::reconstructions::MUSCLHancock::update
     const vectorField* acceleration
 )
 {
-    gradUCalc_.calculate(phases_.U(), gradU_);
+    velocityGradient();
 
     for (label k = 0; k < nPhases_; ++k)
     {
@@ -398,10 +398,17 @@ void Foam::reconstructions::MUSCLHancock::faceState
         const hyperelasticPhase& ph = phases_.phase(k);
         const double rhoc = phases_.rho(k)[celli];
         const double pc = phases_.p(k)[celli];
+        // The phase's own velocity where solids slide (phaseModel::slip)
+        const cobasis::vector Uk
+        (
+            phases_[k].carriesSlip()
+          ? toEigen(Uc + phases_[k].slip(celli))
+          : toEigen(Uc)
+        );
         cellCarried(k, celli, sk);
         sk.rho = rhoc + sl.gRho.dot(de) + sl.dtRho;
         sk.p = pc + sl.gP.dot(de) + sl.dtP;
-        sk.U = toEigen(Uc) + toEigen(gradU_[celli]).transpose()*de + sl.dtU;
+        sk.U = Uk + toEigen(gradU_[celli]).transpose()*de + sl.dtU;
         if (ph.solid())
         {
             // (a cell without a record: zero slopes and increment)
@@ -434,7 +441,7 @@ void Foam::reconstructions::MUSCLHancock::faceState
             // An inadmissible predicted state: the cell value
             sk.rho = rhoc;
             sk.p = pc;
-            sk.U = toEigen(Uc);
+            sk.U = Uk;
             sk.A = cobasisOrIdentity(k, celli);
         }
         completeSide(k, sk);
@@ -463,7 +470,10 @@ void Foam::reconstructions::MUSCLHancock::centreState
         sk.alpha = phases_.alpha(k)[celli];
         sk.rho = phases_.rho(k)[celli];
         sk.p = phases_.p(k)[celli];
-        sk.U = toEigen(Uc);
+        sk.U =
+            phases_[k].carriesSlip()
+          ? toEigen(Uc + phases_[k].slip(celli))
+          : toEigen(Uc);
         sk.A = cobasisOrIdentity(k, celli);
         sk.a = cells_.a(k, celli);
         cellCarried(k, celli, sk);

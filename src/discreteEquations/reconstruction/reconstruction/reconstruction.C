@@ -99,13 +99,45 @@ void Foam::reconstruction::cellSide
     {
         s.sigma = -s.p*cobasis::matrix::Identity();
     }
-    s.E =
-        cells_.E(k, celli)
-      + 0.5*(U.squaredNorm() - magSqr(phases_.U()[celli]));
+    if (phases_[k].carriesSlip())
+    {
+        // The phase's own velocity where solids slide (phaseModel::slip)
+        const cobasis::vector w(toEigen(phases_[k].slip(celli)));
+        s.U += w;
+        s.E =
+            cells_.E(k, celli)
+          + 0.5
+           *(
+                s.U.squaredNorm()
+              - (toEigen(phases_.U()[celli]) + w).squaredNorm()
+            );
+    }
+    else
+    {
+        s.E =
+            cells_.E(k, celli)
+          + 0.5*(U.squaredNorm() - magSqr(phases_.U()[celli]));
+    }
     s.a = cells_.a(k, celli);
     s.cT = std::sqrt(ph.cT2());
     s.solid = ph.solid();
     s.trace = phases_.regimes().trace(s.alpha);
+}
+
+
+void Foam::reconstruction::velocityGradient()
+{
+    gradUCalc_.calculate(phases_.U(), gradU_);
+    if (const slidingInterfaces* sliding = phases_.sliding())
+    {
+        forAll(gradU_, c)
+        {
+            if (sliding->inBand(c))
+            {
+                gradU_[c] = tensor::zero;
+            }
+        }
+    }
 }
 
 
