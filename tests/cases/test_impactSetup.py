@@ -388,6 +388,18 @@ BAD = [
     ("radialKeyword", ("U (-1500 0 0); T 293;", "T 293; radialVelocity { "
                        "centre (0 0 0); U -100; radius 1e-3; exponnt -2; }"),
      ["Body rod, radialVelocity", "exponnt", "did you mean exponent"]),
+    ("contactPhase", ("bodies\n{", "contacts { tungstenAlloy.steel434 "
+                      "frictionless; }\nbodies\n{"),
+     ["contacts", "names steel434", "nearest: steel4340"]),
+    ("contactFluid", ("bodies\n{", "contacts { tungstenAlloy.air "
+                      "frictionless; }\nbodies\n{"),
+     ["contacts", "two different solid phases", "air fluid"]),
+    ("contactLaw", ("bodies\n{", "contacts { default slippery; }"
+                    "\nbodies\n{"),
+     ["unknown contact law slippery", "coulomb", "frictionless"]),
+    ("contactMu", ("bodies\n{", "contacts { default { type coulomb; } }"
+                   "\nbodies\n{"),
+     ["coulomb needs its friction coefficient mu"]),
     ("radialRadius", ("U (-1500 0 0); T 293;", "T 293; radialVelocity { "
                       "centre (0 0 0); U -100; radius 0; }"),
      ["Body rod, radialVelocity: radius 0 must be positive"]),

@@ -1,6 +1,6 @@
 /*---------------------------------------------------------------------------*\
   Unit tests of the contact laws between different solids (contactLaw.H,
-  solidContacts.H; docs/model.md section 7.4, docs/numerics.md section
+  solidContacts.H; docs/model.md section 7.5, docs/numerics.md section
   3.4): the selection and its errors, each law's shear limit (the traction
   cap, no tension), the table of pairs, and the face Riemann problem of
   two elastic half-spaces pressed together and sliding, against the exact

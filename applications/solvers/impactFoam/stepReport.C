@@ -16,6 +16,7 @@ Foam::stepReport::stepReport
     dem_(dem),
     voidCells_(voidCells),
     unpaidTotal_(0),
+    frictionTotal_(0),
     ledger_(phases)
 {}
 
@@ -24,7 +25,7 @@ Foam::stepReport::stepReport
 
 void Foam::stepReport::counts::reduce()
 {
-    List<scalar> all(8);
+    List<scalar> all(9);
     all[0] = vacuumCells;
     all[1] = unpaidCells;
     all[2] = unpaidEnergy;
@@ -33,6 +34,7 @@ void Foam::stepReport::counts::reduce()
     all[5] = voidCells;
     all[6] = voidEnergy;
     all[7] = untransportedCells;
+    all[8] = frictionalHeat;
     Pstream::listCombineGather(all, plusEqOp<scalar>());
     Pstream::listCombineScatter(all);
     vacuumCells = all[0];
@@ -43,6 +45,7 @@ void Foam::stepReport::counts::reduce()
     voidCells = all[5];
     voidEnergy = all[6];
     untransportedCells = all[7];
+    frictionalHeat = all[8];
 }
 
 
@@ -57,7 +60,9 @@ void Foam::stepReport::step(const scalar deltaT)
     n.voidCells = voidCells_.nCells();
     n.voidEnergy = voidCells_.energy();
     n.untransportedCells = dem_.cobasis().missedCells();
+    n.frictionalHeat = relaxation_.frictionalHeat();
     n.reduce();
+    frictionTotal_ += n.frictionalHeat;
 
     dem_.fallback().countStep(n.fallbackCells, n.fallbackFaces);
     if (n.vacuumCells > 0)
@@ -103,6 +108,11 @@ void Foam::stepReport::logTotals(const bool initial) const
         os  << "    totals: mass " << totals.first() << " kg, energy "
             << totals.second() << " J, energy added without a payer "
             << unpaidTotal_ << " J";
+        if (phases_.sliding())
+        {
+            os  << ", heat of friction between sliding solids "
+                << frictionTotal_ << " J";
+        }
     }
     Info<< os.str().c_str() << nl;
 }

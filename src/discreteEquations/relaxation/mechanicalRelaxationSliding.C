@@ -3,7 +3,7 @@
 -------------------------------------------------------------------------------
 Description
     The velocity relaxation of a cell where two solids that may slide on
-    each other meet (docs/numerics.md section 9.2b).
+    each other meet (docs/numerics.md section 9.3a).
 
 \*---------------------------------------------------------------------------*/
 
