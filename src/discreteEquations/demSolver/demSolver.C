@@ -370,8 +370,7 @@ void Foam::demSolver::prepare()
     // restored state)
     cells_.update();
 
-    // Where solids that may slide meet (their velocity relaxation and
-    // the reconstruction's first-order velocity there)
+    // Where solids that may slide meet (their velocity relaxation)
     phases_.updateSliding();
 }
 

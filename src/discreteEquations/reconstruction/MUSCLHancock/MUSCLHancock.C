@@ -273,7 +273,7 @@ void Foam::reconstructions::MUSCLHancock::update
     const vectorField* acceleration
 )
 {
-    velocityGradient();
+    gradUCalc_.calculate(phases_.U(), gradU_);
 
     for (label k = 0; k < nPhases_; ++k)
     {

@@ -33,7 +33,7 @@ void Foam::reconstructions::firstOrder::update
     const vectorField*
 )
 {
-    velocityGradient();
+    gradUCalc_.calculate(phases_.U(), gradU_);
 }
 
 

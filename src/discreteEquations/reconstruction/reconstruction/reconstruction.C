@@ -125,22 +125,6 @@ void Foam::reconstruction::cellSide
 }
 
 
-void Foam::reconstruction::velocityGradient()
-{
-    gradUCalc_.calculate(phases_.U(), gradU_);
-    if (const slidingInterfaces* sliding = phases_.sliding())
-    {
-        forAll(gradU_, c)
-        {
-            if (sliding->inBand(c))
-            {
-                gradU_[c] = tensor::zero;
-            }
-        }
-    }
-}
-
-
 void Foam::reconstruction::markMinor(std::vector<phaseSide>& s) const
 {
     double rhoMix = 0;
