@@ -38,6 +38,11 @@ Checks per law and configuration:
     V15a_<law>_<angle>[_offset<o>]_normal     |u_n| <= 1 % of V and |sigma_nn + p0| <=
                                    1 % of p0 on the plateaus (no spurious
                                    normal wave)
+and, with slip walls instead of the open sides (a closed box), coulomb
+through a row of cells:
+    V15a_closedBox_conservation  mass and total energy (the solver's totals
+                                 lines) kept to 1e-11 and 1e-10, the heat of
+                                 friction logged and positive
 """
 import os
 import shutil
@@ -133,7 +138,7 @@ def clip_fraction(x0, x1, y0, y1, c, n):
     return 0.5 * abs(a) / ((x1 - x0) * (y1 - y0))
 
 
-def set_up(case, theta, offset, law):
+def set_up(case, theta, offset, law, closed=False):
     if os.path.isdir(case):
         shutil.rmtree(case)
     L = N * H
@@ -143,10 +148,10 @@ vertices ((0 0 0) (%(L)g 0 0) (%(L)g %(L)g 0) (0 %(L)g 0)
 blocks (hex (0 1 2 3 4 5 6 7) (%(n)d %(n)d 1) simpleGrading (1 1 1));
 boundary
 (
-    sides { type patch; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2)); }
+    sides { type %(side)s; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2)); }
     frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); }
 );
-""" % {"L": L, "h": H, "n": N})
+""" % {"L": L, "h": H, "n": N, "side": "wall" if closed else "patch"})
     write(case, "system/controlDict", """
 application     impactFoam;
 startFrom       startTime;
@@ -197,6 +202,12 @@ steel { material steel4340; }
     vs = -va
     ma, ms = alpha * RHO["al"], (1 - alpha) * RHO["steel"]
     U = (ma[:, None] * va + ms[:, None] * vs) / (ma + ms)[:, None]
+    patch = {"type": "slip"} if closed else None
+    fw_write = fw.write_field
+
+    def write_field(case, time, name, values, mesh, **kw):
+        fw_write(case, time, name, values, mesh, default_patch=patch, **kw)
+    fw.write_field = write_field
     fw.write_field(case, "0", "alpha.al", alpha, m)
     fw.write_field(case, "0", "alpha.steel", 1 - alpha, m)
     fw.write_field(case, "0", "rho.al", RHO["al"], m)
@@ -211,7 +222,43 @@ steel { material steel4340; }
             for d, comp in enumerate("xyz"):
                 fw.write_field(case, "0", "slipU%s.%s" % (comp, k), w[:, d],
                                m, dimensions="[0 1 -1 0 0 0 0]")
+    fw.write_field = fw_write
     return m, c, n, t
+
+
+def totals(log):
+    """(mass, energy) of the first and last totals lines of a log."""
+    rows = []
+    with open(log) as f:
+        for line in f:
+            if "totals: mass" in line:
+                w = line.split()
+                rows.append((float(w[w.index("mass") + 1]),
+                             float(w[w.index("energy") + 1])))
+    return rows[0], rows[-1]
+
+
+def check_closed_box():
+    """Coulomb sliding in a closed box (slip walls): mass and total energy
+    kept to round-off, the heat of friction counted."""
+    case = os.path.join(fc.RUN_DIR, NAME, "closedBox")
+    try:
+        set_up(case, 0.0, 0.25, "coulomb", closed=True)
+        log = fc.run(case, ["impactFoam"], timeout=900)
+    except fc.FoamError as e:
+        checks.fail("V15a_closedBox_conservation", e.summary or str(e))
+        return
+    (m0, e0), (m1, e1) = totals(log)
+    with open(log) as f:
+        heat = [float(l.split("sliding solids")[1].split()[0])
+                for l in f if "heat of friction" in l]
+    dm, de = abs(m1 - m0) / m0, abs(e1 - e0) / e0
+    checks.check(
+        "V15a_closedBox_conservation",
+        dm < 1e-11 and de < 1e-10 and heat and heat[-1] > 0,
+        "coulomb, slip walls, to %g s: relative change of mass %.2e, of "
+        "total energy %.2e (bounds 1e-11, 1e-10); heat of friction %s J"
+        % (T_END, dm, de, heat[-1] if heat else "not logged"))
 
 
 def measure(case, m, c, n, t):
@@ -277,6 +324,8 @@ def main():
                 "max |u_n| %.3g m/s (%.2f %% of V), max |sigma_nn + p0| "
                 "%.3g Pa (%.2f %% of p0)"
                 % (un, 100 * un / V, snn, 100 * snn / P0))
+    if "coulomb" in os.environ.get("V15_LAWS", "coulomb"):
+        check_closed_box()
     return checks.exit()
 
 

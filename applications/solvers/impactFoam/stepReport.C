@@ -89,7 +89,7 @@ void Foam::stepReport::step(const scalar deltaT)
             << " cells: energy added " << n.voidEnergy << " J" << nl;
     }
 
-    ledger_.accept(deltaT, dem_.patchForces(), unpaidTotal_);
+    ledger_.accept(deltaT, dem_.patchForces(), unpaidTotal_, frictionTotal_);
 }
 
 

@@ -29,7 +29,8 @@ Foam::stepLedger::stepLedger(const phaseSystem& phases)
     deltaT_(0),
     patchForces_(phases.mesh().boundary().size(), Zero),
     patchImpulses_(phases.mesh().boundary().size(), Zero),
-    unpaidEnergy_(0)
+    unpaidEnergy_(0),
+    frictionalHeat_(0)
 {}
 
 
@@ -39,7 +40,8 @@ void Foam::stepLedger::accept
 (
     const scalar deltaT,
     const vectorField& patchForces,
-    const scalar unpaidEnergy
+    const scalar unpaidEnergy,
+    const scalar frictionalHeat
 )
 {
     timeIndex_ = phases_.mesh().time().timeIndex();
@@ -50,6 +52,7 @@ void Foam::stepLedger::accept
         patchImpulses_[patchi] += deltaT*patchForces[patchi];
     }
     unpaidEnergy_ = unpaidEnergy;
+    frictionalHeat_ = frictionalHeat;
 }
 
 

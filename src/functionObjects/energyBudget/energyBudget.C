@@ -48,6 +48,10 @@ Foam::wordList Foam::functionObjects::energyBudget::columns() const
     c.append("plasticWork");
     c.append("total");
     c.append("unpaid");
+    if (phases().sliding())
+    {
+        c.append("frictionHeat");
+    }
     return wordList(c);
 }
 
@@ -71,11 +75,14 @@ void Foam::functionObjects::energyBudget::values(DynamicList<scalar>& row)
         const bool solid = ph.solid();
         const tensorField* A = phases.cellCobasis(k);
         const inelasticModel& inelastic = phases[k].inelastic();
+        const bool slips = phases[k].carriesSlip();
         scalar* s = &sums[4*k];
         forAll(V, c)
         {
             const scalar m = alpha[c]*rho[c]*V[c];
-            s[0] += 0.5*m*magSqr(U[c]);
+            s[0] +=
+                0.5*m
+               *(slips ? magSqr(U[c] + phases[k].slip(c)) : magSqr(U[c]));
             s[1] += m*ph.eos().e(rho[c], p[c]);
             if (solid)
             {
@@ -107,6 +114,10 @@ void Foam::functionObjects::energyBudget::values(DynamicList<scalar>& row)
     }
     row.append(totals.second());
     row.append(ledger().unpaidEnergy());
+    if (phases.sliding())
+    {
+        row.append(ledger().frictionalHeat());
+    }
 }
 
 
