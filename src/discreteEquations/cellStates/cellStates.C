@@ -40,7 +40,6 @@ void Foam::cellStates::update()
         const scalar cT2 = ph.cT2();
         const bool solid = ph.solid();
         const tensorField* A = phase.cellCobasis();
-        const bool slips = phase.carriesSlip();
 
         for (label celli = 0; celli < nCells; ++celli)
         {
@@ -58,12 +57,7 @@ void Foam::cellStates::update()
                 e = ph.eos().e(rho[celli], p[celli]);
             }
             // The phase's own velocity where solids slide (phaseModel::slip)
-            E_[k][celli] =
-                e
-              + 0.5*magSqr
-                (
-                    slips ? U[celli] + phase.slip(celli) : U[celli]
-                );
+            E_[k][celli] = e + 0.5*magSqr(phase.velocity(U[celli], celli));
 
             // The acoustic eigenproblem for the phases that set the time
             // step; a minor phase (a trace is unstrained) takes the

@@ -294,7 +294,6 @@ void Foam::demSolver::newState(const scalar dt, conservedState& q) const
         const tensorField* A = phases_.cellCobasis(k);
         const phaseModel& phase = phases_[k];
         const label nCarried = phase.nCarried();
-        const bool slips = phase.carriesSlip();
 
         for (label c = 0; c < nCells; ++c)
         {
@@ -303,7 +302,7 @@ void Foam::demSolver::newState(const scalar dt, conservedState& q) const
             q.alpha[k][c] = alpha[c] + dtByV*assembly_.dAlpha(k, c);
             q.mass[k][c] = m + dtByV*assembly_.dMass(k, c);
             q.momentum[k][c] =
-                m*toEigen(slips ? U[c] + phase.slip(c) : U[c])
+                m*toEigen(phase.velocity(U[c], c))
               + dtByV*assembly_.dMomentum(k, c);
             q.energy[k][c] = m*cells_.E(k, c) + dtByV*assembly_.dEnergy(k, c);
             if (!q.contactMomentum.empty())

@@ -425,26 +425,13 @@ Foam::Pair<Foam::scalar> Foam::phaseSystem::totals() const
         const scalarField& rho = this->rho(k).primitiveField();
         const scalarField& p = this->p(k).primitiveField();
         const tensorField* A = cellCobasis(k);
-        const bool slips = phases_[k].carriesSlip();
         forAll(V, c)
         {
             const scalar m = alpha[c]*rho[c]*V[c];
             mass += m;
             const scalar e =
                 A ? ph.e(rho[c], p[c], toEigen((*A)[c])) : ph.eos().e(rho[c], p[c]);
-            // The phase's own velocity where solids slide
-            const vector& Uc = U[c];
-            energy +=
-                m
-               *(
-                    e
-                  + 0.5
-                   *(
-                        slips
-                      ? magSqr(Uc + phases_[k].slip(c))
-                      : magSqr(Uc)
-                    )
-                );
+            energy += m*(e + 0.5*magSqr(phases_[k].velocity(U[c], c)));
         }
     }
     return Pair<scalar>

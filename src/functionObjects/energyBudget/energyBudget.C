@@ -75,14 +75,11 @@ void Foam::functionObjects::energyBudget::values(DynamicList<scalar>& row)
         const bool solid = ph.solid();
         const tensorField* A = phases.cellCobasis(k);
         const inelasticModel& inelastic = phases[k].inelastic();
-        const bool slips = phases[k].carriesSlip();
         scalar* s = &sums[4*k];
         forAll(V, c)
         {
             const scalar m = alpha[c]*rho[c]*V[c];
-            s[0] +=
-                0.5*m
-               *(slips ? magSqr(U[c] + phases[k].slip(c)) : magSqr(U[c]));
+            s[0] += 0.5*m*magSqr(phases[k].velocity(U[c], c));
             s[1] += m*ph.eos().e(rho[c], p[c]);
             if (solid)
             {

@@ -399,12 +399,7 @@ void Foam::reconstructions::MUSCLHancock::faceState
         const double rhoc = phases_.rho(k)[celli];
         const double pc = phases_.p(k)[celli];
         // The phase's own velocity where solids slide (phaseModel::slip)
-        const cobasis::vector Uk
-        (
-            phases_[k].carriesSlip()
-          ? toEigen(Uc + phases_[k].slip(celli))
-          : toEigen(Uc)
-        );
+        const cobasis::vector Uk(toEigen(phases_[k].velocity(Uc, celli)));
         cellCarried(k, celli, sk);
         sk.rho = rhoc + sl.gRho.dot(de) + sl.dtRho;
         sk.p = pc + sl.gP.dot(de) + sl.dtP;
@@ -470,10 +465,7 @@ void Foam::reconstructions::MUSCLHancock::centreState
         sk.alpha = phases_.alpha(k)[celli];
         sk.rho = phases_.rho(k)[celli];
         sk.p = phases_.p(k)[celli];
-        sk.U =
-            phases_[k].carriesSlip()
-          ? toEigen(Uc + phases_[k].slip(celli))
-          : toEigen(Uc);
+        sk.U = toEigen(phases_[k].velocity(Uc, celli));
         sk.A = cobasisOrIdentity(k, celli);
         sk.a = cells_.a(k, celli);
         cellCarried(k, celli, sk);
