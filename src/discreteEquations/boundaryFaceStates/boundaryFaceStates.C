@@ -13,6 +13,7 @@ Foam::boundaryFaceStates::boundaryFaceStates(const phaseSystem& phases)
     phases_(phases),
     mesh_(phases.mesh()),
     nPhases_(phases.size()),
+    nExchangeSlide_(phases.sliding() ? 3 : 0),
     exchangeSize_(0),
     exchangeOffset_(nPhases_),
     coupledOwn_(mesh_.boundary().size()),
@@ -21,7 +22,8 @@ Foam::boundaryFaceStates::boundaryFaceStates(const phaseSystem& phases)
     for (label k = 0; k < nPhases_; ++k)
     {
         exchangeOffset_[k] = exchangeSize_;
-        exchangeSize_ += nExchangeState + phases[k].nCarried();
+        exchangeSize_ +=
+            nExchangeState + nExchangeSlide_ + phases[k].nCarried();
     }
 }
 
@@ -80,6 +82,7 @@ void Foam::boundaryFaceStates::update
                 send[i++] = s.a;
                 for (int j = 0; j < 3; ++j) send[i++] = s.U(j);
                 for (int j = 0; j < 9; ++j) send[i++] = s.A(j/3, j%3);
+                for (int j = 0; j < nExchangeSlide_; ++j) send[i++] = s.nSlide(j);
                 for (int j = 0; j < s.nCarried; ++j) send[i++] = s.carried[j];
             }
         }
@@ -140,6 +143,7 @@ void Foam::boundaryFaceStates::ghost
                   : (-c.U).eval();
                 g.A = c.A*M;
                 g.sigma = M*c.sigma*M;
+                g.nSlide = M*c.nSlide;
                 break;
             }
 
@@ -163,10 +167,15 @@ void Foam::boundaryFaceStates::ghost
                 g.a = s[3];
                 g.U = cobasis::vector(s[4], s[5], s[6]);
                 for (int j = 0; j < 9; ++j) g.A(j/3, j%3) = s[7 + j];
+                g.nSlide.setZero();
+                for (int j = 0; j < nExchangeSlide_; ++j)
+                {
+                    g.nSlide(j) = s[nExchangeState + j];
+                }
                 g.nCarried = phases_[k].nCarried();
                 for (int j = 0; j < g.nCarried; ++j)
                 {
-                    g.carried[j] = s[nExchangeState + j];
+                    g.carried[j] = s[nExchangeState + nExchangeSlide_ + j];
                 }
                 rec.completeSide(k, g);
                 break;
@@ -180,6 +189,7 @@ void Foam::boundaryFaceStates::ghost
                 g.p = phases_.p(k).boundaryField()[patchi][patchFacei];
                 g.U = toEigen(phases_.U().boundaryField()[patchi][patchFacei]);
                 g.A = c.A*std::cbrt(g.rho/c.rho);
+                g.nSlide = c.nSlide;
                 g.nCarried = c.nCarried;
                 for (int j = 0; j < c.nCarried; ++j)
                 {

@@ -44,14 +44,6 @@ Foam::demFaceAssembly::demFaceAssembly
         stride_[k] = iCarried + phases[k].nCarried();
         sums_[k].resize(nCells*stride_[k]);
     }
-    if (phases.sliding())
-    {
-        contactSums_.resize(nPhases_);
-        for (auto& sums : contactSums_)
-        {
-            sums.resize(nCells);
-        }
-    }
 }
 
 
@@ -96,6 +88,70 @@ void Foam::demFaceAssembly::floorTension
         sol.momentumFlux(0) += excess;
         sol.energyFlux += excess*sol.uStar;
     }
+}
+
+
+void Foam::demFaceAssembly::slideApart
+(
+    const phaseSide& sl,
+    const phaseSide& sr,
+    const cobasis::matrix& R,
+    riemannState& L,
+    riemannState& R2,
+    cobasis::vector& dL,
+    cobasis::vector& dR
+)
+{
+    // The interface's normal: the sides' band normals, of one sense
+    cobasis::vector ni(sl.nSlide);
+    ni += (ni.dot(sr.nSlide) < 0 ? -1.0 : 1.0)*sr.nSlide;
+    const double magNi = ni.norm();
+    if (!(magNi > 0))
+    {
+        return;
+    }
+    ni /= magNi;
+
+    // Each side's velocity less its part of the relative motion along
+    // the interface, in the face frame: both then share the mean tangential
+    // velocity
+    const cobasis::vector niF(R*ni);
+    const cobasis::vector mean(0.5*(L.v + R2.v));
+    const auto along = [&niF](const cobasis::vector& v)
+    {
+        return (v - v.dot(niF)*niF).eval();
+    };
+    dL = along(L.v - mean);
+    dR = along(R2.v - mean);
+    const double keL = L.v.squaredNorm();
+    const double keR = R2.v.squaredNorm();
+    L.v -= dL;
+    R2.v -= dR;
+    L.E += 0.5*(L.v.squaredNorm() - keL);
+    R2.E += 0.5*(R2.v.squaredNorm() - keR);
+}
+
+
+void Foam::demFaceAssembly::slideBack
+(
+    const cobasis::vector& dL,
+    const cobasis::vector& dR,
+    riemannSolution& sol
+)
+{
+    // Each side's star velocity takes its own sliding back, whole (the
+    // part along the face's normal too: the cobasis and the traction's work
+    // see the phase move along the interface, not into the face); the
+    // upwind state's flux carries its sliding, its kinetic energy and the
+    // traction's work on it
+    const bool left = sol.uStar >= 0;
+    const cobasis::vector& d = left ? dL : dR;
+    const cobasis::vector& vUp = left ? sol.vStarL : sol.vStarR;
+    sol.momentumFlux += sol.massFlux*d;
+    sol.energyFlux +=
+        sol.massFlux*(vUp.dot(d) + 0.5*d.squaredNorm()) - sol.tStar.dot(d);
+    sol.vStarL += dL;
+    sol.vStarR += dR;
 }
 
 
@@ -144,10 +200,6 @@ void Foam::demFaceAssembly::reset()
     {
         std::fill(sums_[k].begin(), sums_[k].end(), 0.0);
     }
-    for (auto& sums : contactSums_)
-    {
-        std::fill(sums.begin(), sums.end(), cobasis::vector::Zero());
-    }
 
     // The time-centred cell states of the last step are stale
     // (allocated for the cells that hold an internal contact only)
@@ -187,8 +239,6 @@ void Foam::demFaceAssembly::solveFace
         }
         fc.vStarSum.setZero();
         fc.vStarWeight = 0;
-        fc.dContact[0].setZero();
-        fc.dContact[1].setZero();
     }
 
     const auto alphaL = [&sideL](const int k) { return sideL[k].alpha; };
@@ -267,20 +317,32 @@ void Foam::demFaceAssembly::solveFace
                     stL.strength = shearStrength(k, sl);
                     stR.strength = shearStrength(j, sr);
                 }
-                // Where a side holds both solids (the interface is inside
-                // that cell) the velocity relaxation there applies the
-                // law's friction; the face then transmits none, or the two
-                // would add up
+                // Where a side's cell holds both solids (the interface is
+                // inside that cell: slidingInterfaces gave it a normal)
+                // the velocity relaxation there applies the law's
+                // friction; the face then transmits none, or the two would
+                // add up. And the pair slides along the interface, not
+                // along the face: their relative velocity along the
+                // interface is taken out of the problem (across an oblique
+                // face it would read as the two moving into or away from
+                // each other) and given back to each side's star velocity
                 const bool inCell =
                     contact
-                 && (
-                        (!sl.trace && !sideL[j].trace)
-                     || (!sr.trace && !sideR[k].trace)
-                    );
+                 && (sl.nSlide.squaredNorm() > 0 || sr.nSlide.squaredNorm() > 0);
+                cobasis::vector dL(cobasis::vector::Zero());
+                cobasis::vector dR(cobasis::vector::Zero());
+                if (inCell)
+                {
+                    slideApart(sl, sr, R, stL, stR, dL, dR);
+                }
                 sol = solver.solve
                 (
                     stL, stR, false, inCell ? frictionless_.get() : contact
                 );
+                if (inCell)
+                {
+                    slideBack(dL, dR, sol);
+                }
                 if (contact)
                 {
                     floorTension(0, sol);
@@ -334,17 +396,6 @@ void Foam::demFaceAssembly::solveFace
                     faceResult_[invaded].dMomentum[c] += Sw*tc;
                     faceResult_[up].dEnergy[c] -= Sw*work;
                     faceResult_[invaded].dEnergy[c] += Sw*work;
-
-                    if (contact)
-                    {
-                        // The tractions' part of the momentum: the flux's
-                        // -t* (out of side 0, into side 1) and the
-                        // Lagrangian part's
-                        faceResult_[up].dContact[0] += Sw*tStar;
-                        faceResult_[up].dContact[1] -= Sw*tStar;
-                        faceResult_[up].dContact[c] -= Sw*tc;
-                        faceResult_[invaded].dContact[c] += Sw*tc;
-                    }
                 }
             };
 
@@ -457,10 +508,6 @@ void Foam::demFaceAssembly::addToCell
         {
             s[iCarried + i] += magSf*fc.dMassCarried[side][i];
         }
-        if (!contactSums_.empty())
-        {
-            contactSums_[k][c] += magSf*fc.dContact[side];
-        }
     }
 }
 
@@ -547,10 +594,6 @@ void Foam::demFaceAssembly::internalContacts
             s[iMomentum + j] += magSf*(fc.dMomentum[0](j) + fc.dMomentum[1](j));
         }
         s[iEnergy] += magSf*(fc.dEnergy[0] + fc.dEnergy[1]);
-        if (!contactSums_.empty())
-        {
-            contactSums_[k][c] += magSf*(fc.dContact[0] + fc.dContact[1]);
-        }
     }
 }
 

@@ -267,7 +267,6 @@ void Foam::demSolver::newState(const scalar dt, conservedState& q) const
     q.energy.resize(nPhases_);
     q.A.resize(nPhases_);
     q.carried.resize(nPhases_);
-    q.contactMomentum.resize(assembly_.sumsContacts() ? nPhases_ : 0);
 
     for (label k = 0; k < nPhases_; ++k)
     {
@@ -275,10 +274,6 @@ void Foam::demSolver::newState(const scalar dt, conservedState& q) const
         q.mass[k].resize(nCells);
         q.momentum[k].resize(nCells);
         q.energy[k].resize(nCells);
-        if (!q.contactMomentum.empty())
-        {
-            q.contactMomentum[k].resize(nCells);
-        }
         q.carried[k].resize(phases_[k].nCarried());
         for (auto& v : q.carried[k])
         {
@@ -305,11 +300,6 @@ void Foam::demSolver::newState(const scalar dt, conservedState& q) const
                 m*toEigen(phase.velocity(U[c], c))
               + dtByV*assembly_.dMomentum(k, c);
             q.energy[k][c] = m*cells_.E(k, c) + dtByV*assembly_.dEnergy(k, c);
-            if (!q.contactMomentum.empty())
-            {
-                q.contactMomentum[k][c] =
-                    dtByV*assembly_.dContactMomentum(k, c);
-            }
 
             // Carried variables per unit mass: the upwind values carried
             // by the mass fluxes, kept within their bounds (a phase left

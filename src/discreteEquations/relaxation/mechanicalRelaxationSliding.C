@@ -38,39 +38,12 @@ bool Foam::mechanicalRelaxation::slideVelocities
         return (v - v.dot(n)*n).eval();
     };
 
-    // The phases' velocities after the step; the common tangential
-    // velocity of the phases other than the pair
+    // The pair's tangential velocities after the step's Riemann problems
     const double mA = cell_.m[a];
     const double mB = cell_.m[b];
     const double mAB = mA + mB;
-    double mOther = 0;
-    for (label k = 0; k < nPhases_; ++k)
-    {
-        if (k != a && k != b)
-        {
-            mOther += cell_.m[k];
-        }
-    }
-
-    // The tangential momentum the pair's contact tractions gave each of
-    // the two, shared in proportion to their masses: a face sees the
-    // interface along its own normal, and the split of a contact's
-    // pressure between the phases of the receiving cell (by the sign of
-    // u*) has a tangential part where the interface is oblique to the
-    // faces (at 45 degrees, 0.6 p of spurious shear). The law's own
-    // tangential exchange follows below
-    cobasis::vector pA(q.momentum[a][c]);
-    cobasis::vector pB(q.momentum[b][c]);
-    if (!q.contactMomentum.empty())
-    {
-        const cobasis::vector xA(tangential(q.contactMomentum[a][c]));
-        const cobasis::vector xB(tangential(q.contactMomentum[b][c]));
-        const cobasis::vector shift(xA - (mA/mAB)*(xA + xB));
-        pA -= shift;
-        pB += shift;
-    }
-    const cobasis::vector tA(tangential(pA/mA));
-    const cobasis::vector tB(tangential(pB/mB));
+    const cobasis::vector tA(tangential(q.momentum[a][c]/mA));
+    const cobasis::vector tB(tangential(q.momentum[b][c]/mB));
 
     // The pair's relative tangential velocity s, and the impulse per unit
     // volume that would stop it (welded); the law allows at most its
@@ -108,28 +81,12 @@ bool Foam::mechanicalRelaxation::slideVelocities
         law.shearLimit(sigmaNN, strength)*sliding->area(c)*dt;
     const double keep = jStick > jMax ? 1 - jMax/jStick : 0;
 
-    cobasis::vector sNew(keep*s);
+    const cobasis::vector sNew(keep*s);
     // The other phases (fluids, traces) take the cell's tangential
     // velocity, and the pair's centre of mass with them: a gas next to a
     // vacuum keeps no velocity of its own
     const cobasis::vector tMean(tangential(u));
     const double un = u.dot(n);
-
-    // The kinetic energy after the step's Riemann problems: the relaxation
-    // gives out no more than that (taking the contact tractions' tangential
-    // part off the pair can leave it with more relative motion than the
-    // step paid for; the slip is then cut to what was paid)
-    double keBefore = 0;
-    for (label k = 0; k < nPhases_; ++k)
-    {
-        keBefore += 0.5*q.momentum[k][c].squaredNorm()/cell_.m[k];
-    }
-    const double keSlip = 0.5*reduced*sNew.squaredNorm();
-    const double keRest = 0.5*(mAB + mOther)*u.squaredNorm();
-    if (keRest + keSlip > keBefore && keSlip > 0)
-    {
-        sNew *= std::sqrt(max(keBefore - keRest, 0.0)/keSlip);
-    }
 
     // Kinetic energy lost, shared as heat in proportion to m |du|^2 (the
     // share of each phase is its own where the relaxation is a projection,

@@ -4,6 +4,7 @@
 
 #include "slidingInterfaces.H"
 #include "surfaceFields.H"
+#include "volPointInterpolation.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -40,6 +41,8 @@ Foam::slidingInterfaces::slidingInterfaces
     grad_.resize(nCells);
     hoodK_.resize(nCells);
     hoodJ_.resize(nCells);
+    sum_.resize(nCells);
+    weight_.resize(nCells);
 }
 
 
@@ -72,15 +75,12 @@ void Foam::slidingInterfaces::update
             hoodJ_[c] = aj[c];
         }
 
-        // Green-Gauss of d = alpha_k - alpha_j with the face value the
-        // mean of its two cells: (d_f - d_c) S_f out of each cell
+        // The neighbourhoods: the largest fraction of each phase in the
+        // cell and its face neighbours (across coupled patches too)
         forAll(nei, facei)
         {
             const label o = own[facei];
             const label n = nei[facei];
-            const vector g(0.5*((ak[n] - aj[n]) - (ak[o] - aj[o]))*Sf[facei]);
-            grad_[o] += g;
-            grad_[n] += g;
             hoodK_[o] = max(hoodK_[o], ak[n]);
             hoodK_[n] = max(hoodK_[n], ak[o]);
             hoodJ_[o] = max(hoodJ_[o], aj[n]);
@@ -102,14 +102,82 @@ void Foam::slidingInterfaces::update
                 alpha[pair.second].boundaryField()[patchi].patchNeighbourField()
             );
             const labelUList& fc = patch.faceCells();
+            forAll(fc, i)
+            {
+                hoodK_[fc[i]] = max(hoodK_[fc[i]], nbrK[i]);
+                hoodJ_[fc[i]] = max(hoodJ_[fc[i]], nbrJ[i]);
+            }
+        }
+
+        // The normal: Green-Gauss of d = alpha_k - alpha_j with the face
+        // value the mean of d at the face's points, d at a point the
+        // inverse-distance mean of the cells around it (volPointInterpolation,
+        // across processors). The point values bring in the cells that
+        // share only an edge or a corner (Youngs' stencil, the 3 x 3 cells
+        // of a square mesh): with the face values from the two cells of a
+        // face alone, an interface at 30 degrees to a square mesh reads
+        // at 42
+        volScalarField d
+        (
+            IOobject
+            (
+                "slidingInterfaces:d",
+                mesh_.time().timeName(),
+                mesh_,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE,
+                false
+            ),
+            mesh_,
+            dimensionedScalar(dimless, Zero),
+            alpha[pair.first].boundaryField().types()
+        );
+        d.primitiveFieldRef() = ak - aj;
+        d.correctBoundaryConditions();
+        for (label pass = 0; pass < nSmooth_; ++pass)
+        {
+            smooth(d);
+        }
+        const tmp<pointScalarField> tdp
+        (
+            volPointInterpolation::New(mesh_).interpolate(d)
+        );
+        const scalarField& dp = tdp().primitiveField();
+        const faceList& faces = mesh_.faces();
+        const auto faceValue = [&faces, &dp](const label facei)
+        {
+            const face& f = faces[facei];
+            scalar sum = 0;
+            forAll(f, i)
+            {
+                sum += dp[f[i]];
+            }
+            return sum/f.size();
+        };
+        forAll(nei, facei)
+        {
+            const label o = own[facei];
+            const label n = nei[facei];
+            const scalar df = faceValue(facei);
+            grad_[o] += (df - d[o])*Sf[facei];
+            grad_[n] -= (df - d[n])*Sf[facei];
+        }
+        forAll(mesh_.boundary(), patchi)
+        {
+            // (the patches that are not coupled hold d_f = d_c: a wall,
+            // a wedge's sides)
+            const fvPatch& patch = mesh_.boundary()[patchi];
+            if (!patch.coupled())
+            {
+                continue;
+            }
+            const labelUList& fc = patch.faceCells();
             const vectorField& pSf = patch.Sf();
+            const label start = patch.start();
             forAll(fc, i)
             {
                 const label c = fc[i];
-                grad_[c] +=
-                    0.5*((nbrK[i] - nbrJ[i]) - (ak[c] - aj[c]))*pSf[i];
-                hoodK_[c] = max(hoodK_[c], nbrK[i]);
-                hoodJ_[c] = max(hoodJ_[c], nbrJ[i]);
+                grad_[c] += (faceValue(start + i) - d[c])*pSf[i];
             }
         }
 
@@ -140,6 +208,59 @@ void Foam::slidingInterfaces::update
     }
 
     shareArea(alpha[0]);
+}
+
+
+void Foam::slidingInterfaces::smooth(volScalarField& d) const
+{
+    // d <- d/2 + (the face-area weighted mean of the face neighbours)/2,
+    // across coupled patches (the other patches take no part)
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const scalarField& magSf = mesh_.magSf();
+    scalarField& dc = d.primitiveFieldRef();
+    const label nCells = mesh_.nCells();
+    for (label c = 0; c < nCells; ++c)
+    {
+        sum_[c] = 0;
+        weight_[c] = 0;
+    }
+    forAll(nei, facei)
+    {
+        const label o = own[facei];
+        const label n = nei[facei];
+        sum_[o] += magSf[facei]*dc[n];
+        sum_[n] += magSf[facei]*dc[o];
+        weight_[o] += magSf[facei];
+        weight_[n] += magSf[facei];
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh_.boundary()[patchi];
+        if (!patch.coupled())
+        {
+            continue;
+        }
+        const scalarField nbr
+        (
+            d.boundaryField()[patchi].patchNeighbourField()
+        );
+        const labelUList& fc = patch.faceCells();
+        const scalarField& pMagSf = patch.magSf();
+        forAll(fc, i)
+        {
+            sum_[fc[i]] += pMagSf[i]*nbr[i];
+            weight_[fc[i]] += pMagSf[i];
+        }
+    }
+    for (label c = 0; c < nCells; ++c)
+    {
+        if (weight_[c] > 0)
+        {
+            dc[c] = 0.5*(dc[c] + sum_[c]/weight_[c]);
+        }
+    }
+    d.correctBoundaryConditions();
 }
 
 

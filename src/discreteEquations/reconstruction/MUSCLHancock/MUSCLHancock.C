@@ -273,7 +273,7 @@ void Foam::reconstructions::MUSCLHancock::update
     const vectorField* acceleration
 )
 {
-    gradUCalc_.calculate(phases_.U(), gradU_);
+    velocityGradient();
 
     for (label k = 0; k < nPhases_; ++k)
     {
@@ -448,6 +448,7 @@ void Foam::reconstructions::MUSCLHancock::faceState
         sk.a = std::sqrt(max(a2, 0.25*ac2));
     }
     markMinor(s);
+    setSlideNormal(celli, s);
 }
 
 
@@ -504,6 +505,7 @@ void Foam::reconstructions::MUSCLHancock::centreState
         [&s](const label k) -> double& { return s[k].alpha; }
     );
     markMinor(s);
+    setSlideNormal(celli, s);
 }
 
 

@@ -33,7 +33,7 @@ void Foam::reconstructions::firstOrder::update
     const vectorField*
 )
 {
-    gradUCalc_.calculate(phases_.U(), gradU_);
+    velocityGradient();
 }
 
 

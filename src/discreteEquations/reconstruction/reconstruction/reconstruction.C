@@ -125,6 +125,53 @@ void Foam::reconstruction::cellSide
 }
 
 
+void Foam::reconstruction::velocityGradient()
+{
+    gradUCalc_.calculate(phases_.U(), gradU_);
+
+    // Where solids may slide on each other (the band of slidingInterfaces)
+    // the cell velocity jumps across the interface by the pair's slip:
+    // the derivative of the tangential velocity along the interface's
+    // normal is left out, or it would read the slip as shear and carry
+    // one solid's velocity into the other's faces (each phase's own
+    // velocity there is U + its slip, phaseModel::velocity)
+    const slidingInterfaces* sliding = phases_.sliding();
+    if (!sliding)
+    {
+        return;
+    }
+    forAll(gradU_, c)
+    {
+        if (sliding->inBand(c))
+        {
+            const vector& n = sliding->normal(c);
+            const vector dUdn(n & gradU_[c]);
+            gradU_[c] -= n*(dUdn - (dUdn & n)*n);
+        }
+    }
+}
+
+
+void Foam::reconstruction::setSlideNormal
+(
+    const label c,
+    std::vector<phaseSide>& s
+) const
+{
+    const slidingInterfaces* sliding = phases_.sliding();
+    const cobasis::vector n
+    (
+        sliding && sliding->inBand(c) && sliding->area(c) > 0
+      ? toEigen(sliding->normal(c))
+      : cobasis::vector::Zero()
+    );
+    for (phaseSide& side : s)
+    {
+        side.nSlide = n;
+    }
+}
+
+
 void Foam::reconstruction::markMinor(std::vector<phaseSide>& s) const
 {
     double rhoMix = 0;
@@ -203,6 +250,7 @@ void Foam::reconstruction::cellSides
         cellSide(k, celli, U, s[k]);
     }
     markMinor(s);
+    setSlideNormal(celli, s);
 }
 
 
