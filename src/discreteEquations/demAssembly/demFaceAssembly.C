@@ -129,6 +129,22 @@ void Foam::demFaceAssembly::slideApart
     R2.v -= dR;
     L.E += 0.5*(L.v.squaredNorm() - keL);
     R2.E += 0.5*(R2.v.squaredNorm() - keR);
+
+    // Each side's traction less the part of its stress that is shear on
+    // the interface's plane, tau (n_i (x) t + t (x) n_i) with tau t =
+    // P sigma n_i: across a face oblique to the interface that shear would
+    // reach the other solid as normal traction on the face (at 45 degrees
+    // it is all normal traction), welding the two wherever the relaxation
+    // lets them slide
+    const cobasis::vector nF(R.row(0).transpose());
+    const auto interfaceShear = [&](const phaseSide& side)
+    {
+        const cobasis::vector sn(side.sigma*ni);
+        const cobasis::vector tau(sn - sn.dot(ni)*ni);
+        return (R*(ni*tau.dot(nF) + tau*ni.dot(nF))).eval();
+    };
+    L.s -= interfaceShear(sl);
+    R2.s -= interfaceShear(sr);
 }
 
 

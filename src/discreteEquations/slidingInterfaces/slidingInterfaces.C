@@ -200,7 +200,7 @@ void Foam::slidingInterfaces::update
                 j_[c] = pair.second;
                 normal_[c] = grad_[c]/magGrad;
                 active_[c] =
-                    (!regimes_.trace(ak[c]) && !regimes_.trace(aj[c]))
+                    (ak[c] >= alphaInterface_ && aj[c] >= alphaInterface_)
                   ? magGrad/V[c]
                   : 0;
             }
