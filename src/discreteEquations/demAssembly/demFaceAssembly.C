@@ -333,8 +333,8 @@ void Foam::demFaceAssembly::solveFace
                     stL.strength = shearStrength(k, sl);
                     stR.strength = shearStrength(j, sr);
                 }
-                // Where a side's cell holds both solids (the interface is
-                // inside that cell: slidingInterfaces gave it a normal)
+                // Where a side's cell holds the interface (slidingInterfaces
+                // gave it a normal)
                 // the velocity relaxation there applies the law's
                 // friction; the face then transmits none, or the two would
                 // add up. And the pair slides along the interface, not

@@ -27,7 +27,7 @@ bool Foam::mechanicalRelaxation::slideVelocities
     }
     const label a = sliding->k(c);
     const label b = sliding->j(c);
-    if (cell_.trace[a] || cell_.trace[b] || !(sliding->area(c) > 0))
+    if (cell_.trace[a] || cell_.trace[b] || !sliding->holdsInterface(c))
     {
         return false;
     }

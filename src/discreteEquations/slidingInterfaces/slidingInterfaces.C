@@ -117,21 +117,7 @@ void Foam::slidingInterfaces::update
         // of a square mesh): with the face values from the two cells of a
         // face alone, an interface at 30 degrees to a square mesh reads
         // at 42
-        volScalarField d
-        (
-            IOobject
-            (
-                "slidingInterfaces:d",
-                mesh_.time().timeName(),
-                mesh_,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE,
-                false
-            ),
-            mesh_,
-            dimensionedScalar(dimless, Zero),
-            alpha[pair.first].boundaryField().types()
-        );
+        volScalarField d(scratchField("d", alpha[pair.first]));
         d.primitiveFieldRef() = ak - aj;
         d.correctBoundaryConditions();
         for (label pass = 0; pass < nSmooth_; ++pass)
@@ -264,10 +250,34 @@ void Foam::slidingInterfaces::smooth(volScalarField& d) const
 }
 
 
+Foam::volScalarField Foam::slidingInterfaces::scratchField
+(
+    const word& name,
+    const volScalarField& like
+) const
+{
+    return volScalarField
+    (
+        IOobject
+        (
+            "slidingInterfaces:" + name,
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh_,
+        dimensionedScalar(dimless, Zero),
+        like.boundaryField().types()
+    );
+}
+
+
 void Foam::slidingInterfaces::shareArea(const volScalarField& like)
 {
-    // The cells where both solids of the pair are present hold the
-    // interface: each takes the interface's area across the cell, its
+    // The cells that hold the interface (each solid of the pair at least
+    // alphaInterface_ of the cell, update): each takes the interface's area across the cell, its
     // width along n (sum |S_f.n|/(2V) for a box, the area per unit volume
     // of a plane through the middle), in the share of the gradient it
     // holds among itself and its neighbours that hold the interface too
@@ -279,21 +289,7 @@ void Foam::slidingInterfaces::shareArea(const volScalarField& like)
     const vectorField& Sf = mesh_.Sf();
     const scalarField& V = mesh_.V();
 
-    volScalarField activeField
-    (
-        IOobject
-        (
-            "slidingInterfaces:active",
-            mesh_.time().timeName(),
-            mesh_,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mesh_,
-        dimensionedScalar(dimless, Zero),
-        like.boundaryField().types()
-    );
+    volScalarField activeField(scratchField("active", like));
     scalarField& a = activeField.primitiveFieldRef();
     for (label c = 0; c < nCells; ++c)
     {

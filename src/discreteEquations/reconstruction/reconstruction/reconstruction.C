@@ -161,7 +161,7 @@ void Foam::reconstruction::setSlideNormal
     const slidingInterfaces* sliding = phases_.sliding();
     const cobasis::vector n
     (
-        sliding && sliding->inBand(c) && sliding->area(c) > 0
+        sliding && sliding->holdsInterface(c)
       ? toEigen(sliding->normal(c))
       : cobasis::vector::Zero()
     );
