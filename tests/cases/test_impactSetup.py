@@ -3,9 +3,9 @@
 on bad input, and the fields of a tutorial set up from one dictionary.
 
 Volumes: each shape (sphere, cylinder turned off the mesh axes, cone,
-truncated cone, box turned about (1 1 1), union of a cylinder and a
-cone, a closed STL polyhedron, half-space) about 10 cells across, off the
-grid, in three geometries: threeD (hex mesh), planar (hex 2-D, one cell in
+truncated cone, tangent ogive nose, box turned about (1 1 1), union of a
+cylinder and a cone, a closed STL polyhedron, half-space) about 10 cells
+across, off the grid, in three geometries: threeD (hex mesh), planar (hex 2-D, one cell in
 z) and axisymmetric (2-degree wedge). The volume on the mesh is measured
 here from the written alpha.<phase> and the cell volumes of the mesh
 (meshGeometry.py): sum alpha V; on the wedge, times 2 pi/sin(2 deg) (a
@@ -21,8 +21,9 @@ Checks
   impactSetup_error_<what>   a bad impactDict stops with the message
                     naming the body or entry (asserted on the text): unknown
                     keyword (body, domain, ambient, top level, gap), unknown
-                    shape, missing dimension, overlapping bodies, body wholly
-                    and partly outside, unknown material (with the list),
+                    shape, missing dimension, an ogive too blunt (crh
+                    below 1/2), overlapping bodies, body wholly and partly
+                    outside, unknown material (with the list),
                     two materials in one phase, gap to an unknown body,
                     cuts naming no earlier body, radialVelocity with U,
                     a misspelled or bad radialVelocity entry
@@ -156,6 +157,17 @@ def cone_volume(L, R0, R1):
     return PI * L * (R0 * R0 + R0 * R1 + R1 * R1) / 3.0
 
 
+def ogive_volumes(a, crh):
+    """(solid of revolution, section area) of a tangent ogive nose of
+    radius a: the arc of radius S = 2 crh a centred at a - S from the axis
+    on the base's plane; rho(s) = sqrt(S^2 - s^2) - (S - a) on [0, l]."""
+    S = 2 * crh * a
+    c = S - a
+    ln = math.sqrt(S * S - c * c)
+    arc = S * S * math.asin(ln / S)
+    return PI * (S * S * ln - ln ** 3 / 3 - c * arc), arc - c * ln
+
+
 def bodies_threeD(case, s):
     """(impactDict bodies text, {phase: exact volume}) at scale s (= H0)."""
     os.makedirs(os.path.join(case, "constant", "triSurface"), exist_ok=True)
@@ -175,6 +187,7 @@ def bodies_threeD(case, s):
                  nose  { shape cone; base %s; axis (1 0 0); length %g;
                          radius %g; } } }
     stl      { shape stl; file "constant/triSurface/ball.stl"; scale %g; }
+    ogive    { shape ogive; base %s; axis (1 0.2 0.1); radius %g; crh 1; }
     halfSpace { shape halfSpace; point %s; normal (-1 0 0); }
 """ % (vec((8.3, 8.2, 8.1), s), 5 * s,
        vec((19.3, 5.2, 6.1), s), 9 * s, 5 * s,
@@ -183,10 +196,11 @@ def bodies_threeD(case, s):
        vec((3.8, 19.7, 3.6), s), vec((11.8, 27.7, 11.6), s),
        vec((19.2, 24.1, 8.1), s), 6 * s, 5 * s,
        vec((25.2, 24.1, 8.1), s), 5 * s, 5 * s,
-       s, vec((62.3, 0, 0), s))
+       s, vec((47.2, 24.1, 8.1), s), 4 * s, vec((62.3, 0, 0), s))
     exact = {
         "sphere": 4 * PI * 125 / 3,
         "cylinder": PI * 25 * 9,
+        "ogive": ogive_volumes(4, 1)[0],
         "cone": cone_volume(10, 5, 0),
         "frustum": cone_volume(10, 5, 2.5),
         "box": 8.0 ** 3,
@@ -212,6 +226,7 @@ def bodies_planar(case, s):
                          length %g; radius %g; }
                  nose  { shape cone; base %s; axis (1 0 0); length %g;
                          radius %g; } } }
+    ogive    { shape ogive; base %s; axis (1 0.2 0); radius %g; crh 1; }
     halfSpace { shape halfSpace; point %s; normal (-1 0 0); }
 """ % (vec((8.3, 8.2, 0), s), 5 * s,
        vec((19.3, 5.2, 0), s), 9 * s, 5 * s,
@@ -220,9 +235,11 @@ def bodies_planar(case, s):
        vec((3.8, 19.7, -1), s), vec((11.8, 27.7, 1), s),
        vec((19.2, 24.1, 0), s), 6 * s, 5 * s,
        vec((25.2, 24.1, 0), s), 5 * s, 5 * s,
+       vec((40.2, 24.1, 0), s), 4 * s,
        vec((62.3, 0, 0), s))
     exact = {
         "disc": PI * 25, "rectangle": 10 * 9, "rod": PI * 25,
+        "ogive": ogive_volumes(4, 1)[1],
         "trapezium": (5 + 2.5) * 10, "box": 64.0,
         "union": 10 * 6 + 5 * 5, "halfSpace": (64 - 62.3) * 32,
     }
@@ -243,6 +260,7 @@ def bodies_axisymmetric(case, s):
                          length %g; radius %g; }
                  nose  { shape cone; base %s; axis (1 0 0); length %g;
                          radius %g; } } }
+    ogive    { shape ogive; base %s; axis (1 0 0); radius %g; crh 1; }
     halfSpace { shape halfSpace; point %s; normal (-1 0 0); }
 """ % (vec((8.3, 0, 0), s), 5 * s,
        vec((16.2, 0, 0), s), 9.3 * s, 5 * s,
@@ -251,16 +269,18 @@ def bodies_axisymmetric(case, s):
        vec((54.2, 3.3, -1), s), vec((62.2, 12.4, 1), s),
        vec((65.3, 0, 0), s), 5 * s, 5 * s,
        vec((70.3, 0, 0), s), 5 * s, 5 * s,
-       vec((78.3, 0, 0), s))
+       vec((78.3, 0, 0), s), 4 * s,
+       vec((90.3, 0, 0), s))
     exact = {
         "sphere": 4 * PI * 125 / 3, "cylinder": PI * 25 * 9.3,
         "cone": cone_volume(10, 5, 0), "frustum": cone_volume(10, 5, 2.5),
         "ring": PI * (12.4 ** 2 - 3.3 ** 2) * 8,
         "union": PI * 25 * 5 + cone_volume(5, 5, 0),
-        "halfSpace": PI * 16 ** 2 * (80 - 78.3),
+        "ogive": ogive_volumes(4, 1)[0],
+        "halfSpace": PI * 16 ** 2 * (92 - 90.3),
     }
     return text, {k: v * s ** 3 for k, v in exact.items()}, \
-        ((0, 0, 0), (80, 16, 0))
+        ((0, 0, 0), (92, 16, 0))
 
 
 def volume_dict(geometry, bodies, lo, hi, h):
@@ -400,6 +420,10 @@ BAD = [
     ("contactMu", ("bodies\n{", "contacts { default { type coulomb; } }"
                    "\nbodies\n{"),
      ["coulomb needs its friction coefficient mu"]),
+    ("ogiveCrh", ("shape cylinder; base (0.5e-3 0 0); axis (1 0 0);\n"
+                  "             length 6e-3;",
+                  "shape ogive; base (0.5e-3 0 0); axis (1 0 0); crh 0.3;"),
+     ["Body rod", "entry crh 0.3 must be at least 0.5"]),
     ("radialRadius", ("U (-1500 0 0); T 293;", "T 293; radialVelocity { "
                       "centre (0 0 0); U -100; radius 0; }"),
      ["Body rod, radialVelocity: radius 0 must be positive"]),
