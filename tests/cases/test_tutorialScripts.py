@@ -18,7 +18,7 @@ command-line convention, rerun-safe, and committed files never touched.
                               byte (taylorBar, clayImpact, taylorTest,
                               spallPlate, hypervelocityImpact, closedBox
                               on 2 processes, templates/projectileOnPlate,
-                              longRodPenetration)
+                              longRodPenetration, rigidPenetration)
 About a minute.
 """
 import filecmp
@@ -45,6 +45,7 @@ CLEAN_RUNS = [
     ("closedBox", ["-np", "2", "-end", "3e-6"]),
     ("templates/projectileOnPlate", ["-h", "1", "-end", "2e-7"]),
     ("longRodPenetration", ["-h", "2", "-end", "2e-7"]),
+    ("rigidPenetration", ["-h", "2", "-end", "2e-7"]),
 ]
 
 
