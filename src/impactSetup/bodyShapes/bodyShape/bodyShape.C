@@ -59,6 +59,30 @@ Foam::scalar Foam::bodyShape::positive
 }
 
 
+Foam::vector Foam::bodyShape::discExtent(const vector& axis)
+{
+    return vector
+    (
+        Foam::sqrt(max(1 - sqr(axis.x()), scalar(0))),
+        Foam::sqrt(max(1 - sqr(axis.y()), scalar(0))),
+        Foam::sqrt(max(1 - sqr(axis.z()), scalar(0)))
+    );
+}
+
+
+bool Foam::bodyShape::onXAxis
+(
+    const point& base,
+    const vector& axis,
+    const scalar length
+)
+{
+    return
+        mag(axis ^ vector(1, 0, 0)) < 1e-12
+     && mag(base.y()) < 1e-12*length && mag(base.z()) < 1e-12*length;
+}
+
+
 Foam::vector Foam::bodyShape::unitVector
 (
     const dictionary& dict,

@@ -125,14 +125,8 @@ Foam::scalar Foam::bodyShapes::cone::distance(const point& p) const
 Foam::boundBox Foam::bodyShapes::cone::bounds() const
 {
     // Each end disc: the centre +- R sqrt(1 - a_i^2) in direction i
-    const vector a(axis_);
-    const vector ext
-    (
-        Foam::sqrt(max(1 - sqr(a.x()), scalar(0))),
-        Foam::sqrt(max(1 - sqr(a.y()), scalar(0))),
-        Foam::sqrt(max(1 - sqr(a.z()), scalar(0)))
-    );
-    const point top(base_ + length_*a);
+    const vector ext(discExtent(axis_));
+    const point top(base_ + length_*axis_);
     boundBox bb(base_ - radius_*ext, base_ + radius_*ext);
     bb.add(top - topRadius_*ext);
     bb.add(top + topRadius_*ext);
@@ -157,10 +151,7 @@ Foam::scalar Foam::bodyShapes::cone::volume
     if (geometry == "axisymmetric")
     {
         // A solid of revolution about x when its axis lies on x
-        const bool onAxis =
-            mag(axis_ ^ vector(1, 0, 0)) < 1e-12
-         && mag(base_.y()) < 1e-12*length_ && mag(base_.z()) < 1e-12*length_;
-        return onAxis ? solid : -1;
+        return onXAxis(base_, axis_, length_) ? solid : -1;
     }
     // planar: the section z = 0 of a cone whose axis lies in that plane
     if (mag(axis_.z()) < 1e-12 && mag(base_.z()) < 1e-12*length_)

@@ -99,15 +99,9 @@ Foam::boundBox Foam::bodyShapes::ogive::bounds() const
 {
     // The base disc: its centre +- a sqrt(1 - a_i^2) in direction i; and
     // the tip
-    const vector a(axis_);
-    const vector ext
-    (
-        Foam::sqrt(max(1 - sqr(a.x()), scalar(0))),
-        Foam::sqrt(max(1 - sqr(a.y()), scalar(0))),
-        Foam::sqrt(max(1 - sqr(a.z()), scalar(0)))
-    );
+    const vector ext(discExtent(axis_));
     boundBox bb(base_ - radius_*ext, base_ + radius_*ext);
-    bb.add(base_ + length_*a);
+    bb.add(base_ + length_*axis_);
     return bb;
 }
 
@@ -133,10 +127,7 @@ Foam::scalar Foam::bodyShapes::ogive::volume
     }
     if (geometry == "axisymmetric")
     {
-        const bool onAxis =
-            mag(axis_ ^ vector(1, 0, 0)) < 1e-12
-         && mag(base_.y()) < 1e-12*l && mag(base_.z()) < 1e-12*l;
-        return onAxis ? solid : -1;
+        return onXAxis(base_, axis_, l) ? solid : -1;
     }
     if (mag(axis_.z()) < 1e-12 && mag(base_.z()) < 1e-12*l)
     {
