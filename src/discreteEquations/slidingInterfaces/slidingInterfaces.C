@@ -57,14 +57,14 @@ void Foam::slidingInterfaces::update
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
     const vectorField& Sf = mesh_.Sf();
-    const scalarField& V = mesh_.V();
 
     std::fill(k_.begin(), k_.end(), -1);
     std::fill(score_.begin(), score_.end(), 0);
     nBand_ = 0;
 
-    for (const auto& pair : pairs_)
+    for (label pairi = 0; pairi < label(pairs_.size()); ++pairi)
     {
+        const auto& pair = pairs_[pairi];
         const scalarField& ak = alpha[pair.first].primitiveField();
         const scalarField& aj = alpha[pair.second].primitiveField();
 
@@ -187,13 +187,13 @@ void Foam::slidingInterfaces::update
                 normal_[c] = grad_[c]/magGrad;
                 active_[c] =
                     (ak[c] >= alphaInterface_ && aj[c] >= alphaInterface_)
-                  ? magGrad/V[c]
+                  ? pairi + 1
                   : 0;
             }
         }
     }
 
-    shareArea(alpha[0]);
+    shareArea(alpha);
 }
 
 
@@ -274,75 +274,97 @@ Foam::volScalarField Foam::slidingInterfaces::scratchField
 }
 
 
-void Foam::slidingInterfaces::shareArea(const volScalarField& like)
+void Foam::slidingInterfaces::shareArea
+(
+    const UPtrList<const volScalarField>& alpha
+)
 {
-    // The cells that hold the interface (each solid of the pair at least
-    // alphaInterface_ of the cell, update): each takes the interface's area across the cell, its
-    // width along n (sum |S_f.n|/(2V) for a box, the area per unit volume
-    // of a plane through the middle), in the share of the gradient it
-    // holds among itself and its neighbours that hold the interface too
-    // (a sharp interface in one row of cells: all of it; spread over two
-    // rows: half each)
     const label nCells = mesh_.nCells();
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
     const vectorField& Sf = mesh_.Sf();
     const scalarField& V = mesh_.V();
 
-    volScalarField activeField(scratchField("active", like));
-    scalarField& a = activeField.primitiveFieldRef();
+    // Each cell's pair, numbered from 1, where it holds the pair's
+    // interface (0 elsewhere): a neighbour holding the same pair's
+    // interface shares a face's area, across coupled patches too
+    volScalarField holding(scratchField("holding", alpha[0]));
+    scalarField& h = holding.primitiveFieldRef();
     for (label c = 0; c < nCells; ++c)
     {
-        a[c] = k_[c] >= 0 ? active_[c] : 0;
-        grad_[c] = vector::zero;
-        hoodK_[c] = a[c];
-        hoodJ_[c] = 0;
+        h[c] = k_[c] >= 0 ? active_[c] : 0;
+        area_[c] = 0;
     }
-    activeField.correctBoundaryConditions();
+    holding.correctBoundaryConditions();
 
-    // hoodK_: the sum of the gradients of the cell and its neighbours of
-    // the same pair, each weighted by |n.n_f| (across the interface);
-    // hoodJ_: sum |S_f.n|
+    // A face's part of the interface: half the jump of d = alpha_k -
+    // alpha_j across it times its area across n, (d_nbr - d_c) S_f.n/2 with
+    // S_f out of c (summed over the faces, the Green-Gauss integral of
+    // grad d . n, whose jump across the interface is 2); all of it to a
+    // cell that holds the interface beside one that does not, half to
+    // each of two that both hold it
+    const auto addFace = [this, &alpha, &h]
+    (
+        const label c,
+        const scalar dOther,
+        const scalar otherHolds,
+        const vector& SfOut
+    )
+    {
+        const scalar dC = alpha[k_[c]][c] - alpha[j_[c]][c];
+        const scalar w = otherHolds == h[c] ? 0.25 : 0.5;
+        area_[c] += w*(dOther - dC)*(SfOut & normal_[c]);
+    };
+
     forAll(nei, facei)
     {
         const label o = own[facei];
         const label n = nei[facei];
-        if (a[o] > 0 && a[n] > 0 && k_[o] == k_[n] && j_[o] == j_[n])
+        if (h[o] > 0)
         {
-            // Neighbours across the interface count, those along it not
-            const vector nf(Sf[facei]/mag(Sf[facei]));
-            hoodK_[o] += a[n]*mag(nf & normal_[o]);
-            hoodK_[n] += a[o]*mag(nf & normal_[n]);
+            addFace(o, alpha[k_[o]][n] - alpha[j_[o]][n], h[n], Sf[facei]);
         }
-        if (a[o] > 0) hoodJ_[o] += mag(Sf[facei] & normal_[o]);
-        if (a[n] > 0) hoodJ_[n] += mag(Sf[facei] & normal_[n]);
+        if (h[n] > 0)
+        {
+            addFace(n, alpha[k_[n]][o] - alpha[j_[n]][o], h[o], -Sf[facei]);
+        }
     }
     forAll(mesh_.boundary(), patchi)
     {
         const fvPatch& patch = mesh_.boundary()[patchi];
+        if (!patch.coupled())
+        {
+            continue;
+        }
         const labelUList& fc = patch.faceCells();
         const vectorField& pSf = patch.Sf();
-        const scalarField nbr
+        const scalarField nbrHolds
         (
-            patch.coupled()
-          ? activeField.boundaryField()[patchi].patchNeighbourField()()
-          : scalarField(fc.size(), 0)
+            holding.boundaryField()[patchi].patchNeighbourField()
         );
+        PtrList<scalarField> nbrAlpha(alpha.size());
+        forAll(alpha, k)
+        {
+            nbrAlpha.set
+            (
+                k, alpha[k].boundaryField()[patchi].patchNeighbourField()
+            );
+        }
         forAll(fc, i)
         {
             const label c = fc[i];
-            if (a[c] > 0)
+            if (h[c] > 0)
             {
-                hoodK_[c] += nbr[i]*mag(pSf[i] & normal_[c])/mag(pSf[i]);
-                hoodJ_[c] += mag(pSf[i] & normal_[c]);
+                const scalar dOther =
+                    nbrAlpha[k_[c]][i] - nbrAlpha[j_[c]][i];
+                addFace(c, dOther, nbrHolds[i], pSf[i]);
             }
         }
     }
 
     for (label c = 0; c < nCells; ++c)
     {
-        area_[c] =
-            a[c] > 0 ? 0.5*hoodJ_[c]/V[c]*a[c]/hoodK_[c] : 0;
+        area_[c] = max(area_[c], scalar(0))/V[c];
     }
 }
 
