@@ -292,7 +292,7 @@ void Foam::slidingInterfaces::shareArea
     scalarField& h = holding.primitiveFieldRef();
     for (label c = 0; c < nCells; ++c)
     {
-        h[c] = k_[c] >= 0 ? active_[c] : 0;
+        h[c] = holdsInterface(c) ? active_[c] : 0;
         area_[c] = 0;
     }
     holding.correctBoundaryConditions();
@@ -337,6 +337,15 @@ void Foam::slidingInterfaces::shareArea
             continue;
         }
         const labelUList& fc = patch.faceCells();
+        bool holds = false;
+        forAll(fc, i)
+        {
+            holds = holds || h[fc[i]] > 0;
+        }
+        if (!holds)
+        {
+            continue;
+        }
         const vectorField& pSf = patch.Sf();
         const scalarField nbrHolds
         (
