@@ -10,7 +10,17 @@ with every other cell masked over the masked cells (maxDifferenceMasked;
 the others must get zero, maskedNonZero); the two-field pass (a phase's
 rho and p together) must give each field's single-pass gradient
 (maxDifferencePair); limitedCells counts the cells where the limiter
-acted, so that the check covers the limiter. Meshes:
+acted, so that the check covers the limiter.
+
+The same tool checks linearVelocityGradient::calculatePresent, the
+gradient of a sliding phase's own velocity from the neighbours that hold
+it (docs/numerics.md 9.3a): a phase on one side of a plane with a linear
+velocity (a dilatation, plus a rotation where the mesh has no wedge),
+a far-off constant beyond it that must not be read; in every cell that
+holds it, limited or not, as exact as the mixture's gradient of the same
+velocity linear everywhere (bound: its error + 1e-9 relative; both are
+exact to round-off but in a wedge's cells on the axis), and the other
+cells untouched. Meshes:
   wedge      the taylorBar tutorial's axisymmetric wedge (0.4 mm: wedge,
              wall, slip and axis patches), serial;
   parallel   the same on 2 processes (processor patches);
@@ -49,7 +59,9 @@ def check_output(log):
     vals = {}
     for key in ("matches", "cells", "maxAbsGradient", "maxDifference",
                 "maxDifferenceMasked", "maskedNonZero",
-                "maxDifferencePair", "limitedCells"):
+                "maxDifferencePair", "limitedCells", "phaseCells",
+                "phaseMaxError", "phaseMaxErrorLimited", "phaseUntouched",
+                "mixtureMaxError"):
         m = re.search(r"^%s (\S+)" % key, text, re.M)
         vals[key] = float(m.group(1)) if m else None
     return vals
@@ -98,6 +110,24 @@ def main():
                int(v["maskedNonZero"] if v["maskedNonZero"] is not None else -1),
                v["maxDifferencePair"],
                v["maxAbsGradient"] or 0))
+
+    for name, v in results.items():
+        err = max(v["phaseMaxError"] if v["phaseMaxError"] is not None else 1,
+                  v["phaseMaxErrorLimited"]
+                  if v["phaseMaxErrorLimited"] is not None else 1)
+        bound = (v["mixtureMaxError"] if v["mixtureMaxError"] is not None
+                 else -1) + 1e-9
+        checks.check(
+            "gradientCheck_phase_" + name,
+            (v["phaseCells"] or 0) > 0 and err < bound
+            and v["phaseUntouched"] == 1,
+            "a phase's own velocity gradient over the %d cells that hold "
+            "it: largest relative error %g unlimited, %g limited (bound "
+            "%g: the mixture's gradient's %g + 1e-9); other cells "
+            "untouched: %s"
+            % (v["phaseCells"] or -1, v["phaseMaxError"],
+               v["phaseMaxErrorLimited"], bound, v["mixtureMaxError"],
+               v["phaseUntouched"] == 1))
 
     schemes = os.path.join(wedge, "system", "fvSchemes")
     text = open(schemes).read()

@@ -1,4 +1,5 @@
 #include "linearVelocityGradient.H"
+#include "boundaryFaceTable.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -138,6 +139,172 @@ void Foam::linearVelocityGradient::calculate
             g.xz() *= l.z(); g.yz() *= l.z(); g.zz() *= l.z();
         }
     );
+}
+
+void Foam::linearVelocityGradient::calculatePresent
+(
+    const volVectorField& Uk,
+    const volScalarField& alpha,
+    const scalar alphaMin,
+    const labelUList& cells,
+    tensorField& gradUk
+) const
+{
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& C = mesh_.cellCentres();
+    const vectorField& Cf = mesh_.faceCentres();
+    const volVectorField& Cv = mesh_.C();
+    const cellList& meshCells = mesh_.cells();
+    const label nInternal = mesh_.nInternalFaces();
+    const boundaryFaceTable boundaryFace(mesh_);
+    const Vector<label>& geomD = mesh_.geometricD();
+
+    // The neighbouring processors' centres, velocities and fractions
+    const label nPatches = mesh_.boundary().size();
+    List<vectorField> nbrC(nPatches);
+    List<vectorField> nbrU(nPatches);
+    List<scalarField> nbrAlpha(nPatches);
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (stencil_.kind(patchi) == cellLimiter::neighbour::coupled)
+        {
+            nbrC[patchi] = Cv.boundaryField()[patchi].patchNeighbourField();
+            nbrU[patchi] = Uk.boundaryField()[patchi].patchNeighbourField();
+            nbrAlpha[patchi] =
+                alpha.boundaryField()[patchi].patchNeighbourField();
+        }
+    }
+
+    // The neighbour across a face of a cell, where it holds the phase: its
+    // offset from the cell centre and its value
+    const auto neighbour = [&]
+    (
+        const label celli,
+        const label facei,
+        vector& d,
+        vector& vn
+    )
+    {
+        if (facei < nInternal)
+        {
+            const label nb = own[facei] == celli ? nei[facei] : own[facei];
+            if (alpha[nb] < alphaMin) return false;
+            d = C[nb] - C[celli];
+            vn = Uk[nb];
+            return true;
+        }
+        label patchi, i;
+        if (!boundaryFace(facei, patchi, i)) return false;
+        const cellLimiter::neighbour kind = stencil_.kind(patchi);
+        if
+        (
+            kind == cellLimiter::neighbour::none
+         || (
+                kind == cellLimiter::neighbour::coupled
+             && nbrAlpha[patchi][i] < alphaMin
+            )
+        )
+        {
+            return false;
+        }
+        d = stencil_.offset(patchi, i, nbrC[patchi]);
+        vn = stencil_.value(patchi, i, Uk, nbrU[patchi]);
+        return true;
+    };
+
+    for (const label celli : cells)
+    {
+        const vector& uc = Uk[celli];
+        symmTensor G(Zero);
+        tensor b(Zero);
+        vector vMax(uc);
+        vector vMin(uc);
+        for (const label facei : meshCells[celli])
+        {
+            vector d, vn;
+            if (!neighbour(celli, facei, d, vn)) continue;
+            G += sqr(d)/magSqr(d);
+            b += (d/magSqr(d))*(vn - uc);
+            vMax = max(vMax, vn);
+            vMin = min(vMin, vn);
+        }
+
+        // Directions without extent: unit diagonal (zero gradient there);
+        // too few neighbours for a full gradient (the phase's corner): a
+        // small multiple of the identity, the least gradient that fits
+        const scalar scale = tr(G)/3;
+        if (!(scale > 0))
+        {
+            gradUk[celli] = Zero;
+            continue;
+        }
+        for (direction dir = 0; dir < vector::nComponents; ++dir)
+        {
+            if (geomD[dir] < 0)
+            {
+                vector e(Zero);
+                e[dir] = 1;
+                G += scale*sqr(e);
+            }
+        }
+        if (det(G) < 1e-6*pow3(scale))
+        {
+            G += 1e-3*scale*symmTensor(I);
+        }
+        tensor g(inv(tensor(G)) & b);
+
+        if (limit_)
+        {
+            // Barth-Jespersen, component by component, at the centres of
+            // the faces whose neighbour holds the phase (not wedges: the
+            // image lies next to the centre), within their range: across
+            // the others the phase meets another, and the range of its
+            // neighbours says nothing of its velocity there
+            vector l(vector::one);
+            const vector small
+            (
+                1e-12*(cmptMag(uc) + cmptMag(vMax) + cmptMag(vMin))
+              + vector::uniform(VSMALL)
+            );
+            for (const label facei : meshCells[celli])
+            {
+                vector d, vn;
+                if (!neighbour(celli, facei, d, vn)) continue;
+                label patchi, i;
+                if
+                (
+                    facei >= nInternal
+                 && boundaryFace(facei, patchi, i)
+                 && stencil_.kind(patchi) == cellLimiter::neighbour::wedge
+                )
+                {
+                    continue;
+                }
+                const vector dv((Cf[facei] - C[celli]) & g);
+                for (direction cmpt = 0; cmpt < vector::nComponents; ++cmpt)
+                {
+                    // A change at round-off is no change: the range can
+                    // be one-sided here (the phase's edge), and its
+                    // bound the cell's own value
+                    scalar r = 1;
+                    if (dv[cmpt] > small[cmpt])
+                    {
+                        r = (vMax[cmpt] - uc[cmpt])/dv[cmpt];
+                    }
+                    else if (dv[cmpt] < -small[cmpt])
+                    {
+                        r = (vMin[cmpt] - uc[cmpt])/dv[cmpt];
+                    }
+                    l[cmpt] = min(l[cmpt], r);
+                }
+            }
+            g.xx() *= l.x(); g.yx() *= l.x(); g.zx() *= l.x();
+            g.xy() *= l.y(); g.yy() *= l.y(); g.zy() *= l.y();
+            g.xz() *= l.z(); g.yz() *= l.z(); g.zz() *= l.z();
+        }
+        gradUk[celli] = g;
+    }
 }
 
 

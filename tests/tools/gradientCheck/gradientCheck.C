@@ -27,6 +27,21 @@ Description
                             cells
         limitedCells <n>    cells whose limited gradient differs from the
                             plain Gauss gradient (the limiter was active)
+        phaseCells <n>      cells holding a phase on one side of a plane
+                            (alpha 1; 0 beyond, where the velocity is a
+                            far-off constant the phase must not read)
+        phaseMaxError <e>   linearVelocityGradient::calculatePresent of
+                            the phase's linear velocity u = a x + b e x x
+                            (equivariant under the mesh's mirrors and
+                            wedges; b = 0 with wedges) over those cells,
+                            largest |grad u - exact|/|exact| in the
+                            directions with extent, unlimited
+        phaseMaxErrorLimited <e>  the same, limited
+        mixtureMaxError <e> the same of linearVelocityGradient::calculate
+                            over the same cells, the velocity linear in
+                            every cell (the bound: on a wedge mesh neither
+                            is exact in the cells on the axis)
+        phaseUntouched <0|1>  the other cells keep what they held
 
 Usage
     gradientCheck [-parallel] [-case dir]
@@ -35,6 +50,11 @@ Usage
 
 #include "fvCFD.H"
 #include "cellLimitedGauss.H"
+#include "linearVelocityGradient.H"
+#include "wedgeFvPatch.H"
+#include "symmetryPlaneFvPatch.H"
+#include "symmetryFvPatch.H"
+#include "emptyFvPatch.H"
 
 using namespace Foam;
 
@@ -153,6 +173,146 @@ int main(int argc, char *argv[])
     reduce(nLimited, sumOp<label>());
     reduce(nMaskedNonZero, sumOp<label>());
 
+    // A phase's own velocity gradient where it is present
+    List<cellLimiter::neighbour> kinds(mesh.boundary().size());
+    bool wedges = false;
+    forAll(mesh.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh.boundary()[patchi];
+        if (isA<wedgeFvPatch>(patch))
+        {
+            kinds[patchi] = cellLimiter::neighbour::wedge;
+            wedges = true;
+        }
+        else if (isA<emptyFvPatch>(patch))
+        {
+            kinds[patchi] = cellLimiter::neighbour::none;
+        }
+        else if (patch.coupled())
+        {
+            kinds[patchi] = cellLimiter::neighbour::coupled;
+        }
+        else if
+        (
+            isA<symmetryPlaneFvPatch>(patch) || isA<symmetryFvPatch>(patch)
+        )
+        {
+            kinds[patchi] = cellLimiter::neighbour::mirror;
+        }
+        else
+        {
+            kinds[patchi] = cellLimiter::neighbour::value;
+        }
+    }
+    const scalar a = 1e3;
+    const scalar b = wedges ? 0 : 2e3;
+    const vector e(1, 0, 0);
+    const tensor exact(a*tensor::I + b*tensor(0, 0, 0, 0, 0, 1, 0, -1, 0));
+    const auto uExact = [&](const point& x) { return vector(a*x + b*(e ^ x)); };
+    volScalarField alphaK
+    (
+        cellField("alphaK", [&](const point& x) { return scalar(x.x() < mid.x()); })
+    );
+    volVectorField uK
+    (
+        IOobject("uK", runTime.timeName(), mesh),
+        mesh,
+        dimensionedVector(dimVelocity, Zero),
+        "zeroGradient"
+    );
+    DynamicList<label> present;
+    forAll(uK, c)
+    {
+        uK[c] = alphaK[c] > 0.5 ? uExact(mesh.C()[c]) : vector(1e6, -1e6, 1e6);
+        if (alphaK[c] > 0.5) present.append(c);
+    }
+    uK.correctBoundaryConditions();
+    forAll(mesh.boundary(), patchi)
+    {
+        if (kinds[patchi] == cellLimiter::neighbour::value)
+        {
+            uK.boundaryFieldRef()[patchi] ==
+                vectorField(mesh.boundary()[patchi].Cf().size(), Zero);
+            forAll(mesh.boundary()[patchi], i)
+            {
+                uK.boundaryFieldRef()[patchi][i] =
+                    uExact(mesh.boundary()[patchi].Cf()[i]);
+            }
+        }
+    }
+    // The derivatives along and of the directions with extent only (a
+    // wedge's normal has none: both gradients complete it alike)
+    const Vector<label>& geomD = mesh.geometricD();
+    const auto inPlane = [&geomD](tensor t)
+    {
+        for (direction i = 0; i < 3; ++i)
+        {
+            for (direction j = 0; j < 3; ++j)
+            {
+                if (geomD[i] < 0 || geomD[j] < 0) t(i, j) = 0;
+            }
+        }
+        return t;
+    };
+    const tensor sentinel(tensor::one);
+    scalar phaseErr[2] = {0, 0};
+    bool untouched = true;
+    for (int limited = 0; limited < 2; ++limited)
+    {
+        const linearVelocityGradient calc(mesh, kinds, limited);
+        tensorField gK(mesh.nCells(), sentinel);
+        calc.calculatePresent(uK, alphaK, 0.5, present, gK);
+        forAll(gK, c)
+        {
+            if (alphaK[c] > 0.5)
+            {
+                phaseErr[limited] = max
+                (
+                    phaseErr[limited],
+                    mag(inPlane(gK[c] - exact))/mag(inPlane(exact))
+                );
+            }
+            else if (gK[c] != sentinel)
+            {
+                untouched = false;
+            }
+        }
+        reduce(phaseErr[limited], maxOp<scalar>());
+    }
+    reduce(untouched, andOp<bool>());
+
+    // The mixture's gradient of the same velocity, linear everywhere, over
+    // the same cells: the bound of the phase's (on a wedge mesh the cells
+    // on the axis are not exact in either)
+    volVectorField uAll(uK);
+    forAll(uAll, c)
+    {
+        uAll[c] = uExact(mesh.C()[c]);
+    }
+    uAll.correctBoundaryConditions();
+    forAll(mesh.boundary(), patchi)
+    {
+        if (kinds[patchi] == cellLimiter::neighbour::value)
+        {
+            forAll(mesh.boundary()[patchi], i)
+            {
+                uAll.boundaryFieldRef()[patchi][i] =
+                    uExact(mesh.boundary()[patchi].Cf()[i]);
+            }
+        }
+    }
+    tensorField gAll;
+    linearVelocityGradient(mesh, kinds, false).calculate(uAll, gAll);
+    scalar mixtureErr = 0;
+    for (const label c : present)
+    {
+        mixtureErr = max
+        (
+            mixtureErr, mag(inPlane(gAll[c] - exact))/mag(inPlane(exact))
+        );
+    }
+    reduce(mixtureErr, maxOp<scalar>());
+
     Info<< "matches " << cellLimitedGauss::matches(mesh, v.name()) << nl
         << "cells " << returnReduce(mesh.nCells(), sumOp<label>()) << nl
         << "maxAbsGradient " << maxG << nl
@@ -160,7 +320,12 @@ int main(int argc, char *argv[])
         << "maxDifferenceMasked " << maxDMasked << nl
         << "maskedNonZero " << nMaskedNonZero << nl
         << "maxDifferencePair " << maxDPair << nl
-        << "limitedCells " << nLimited << endl;
+        << "limitedCells " << nLimited << nl
+        << "phaseCells " << returnReduce(present.size(), sumOp<label>()) << nl
+        << "phaseMaxError " << phaseErr[0] << nl
+        << "phaseMaxErrorLimited " << phaseErr[1] << nl
+        << "phaseUntouched " << untouched << nl
+        << "mixtureMaxError " << mixtureErr << endl;
 
     return 0;
 }

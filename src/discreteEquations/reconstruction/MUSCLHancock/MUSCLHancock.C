@@ -232,7 +232,7 @@ void Foam::reconstructions::MUSCLHancock::setCellSlopes
         predictor_.predict
         (
             k, c, halfDt, rho[c], p[c], U[c], A ? (*A)[c] : tensor::I,
-            gradU_[c], a, sl, so
+            gradU(k, c), a, sl, so
         );
     }
 }
@@ -390,8 +390,18 @@ void Foam::reconstructions::MUSCLHancock::faceState
         if (sl.minor && !first)
         {
             // No slopes: the cell state, moved by the body acceleration
-            // only; its stress, energy and wave speed are the cell's
-            cellSide(k, celli, toEigen(Uc) + sl.dtU, sk);
+            // only; its stress, energy and wave speed are the cell's. But
+            // a phase that slides in the band keeps its own velocity
+            // slope: beside a cell it does not hold, its faces would
+            // otherwise take its cell velocity while its next cell's
+            // faces take the slope, and its shear waves would answer the
+            // jump (a rotation's omega h/2) with a traction that drags it
+            cobasis::vector U(toEigen(Uc) + sl.dtU);
+            if (ownVelocityGradient(k, celli))
+            {
+                U += toEigen(gradU(k, celli)).transpose()*de;
+            }
+            cellSide(k, celli, U, sk);
             continue;
         }
 
@@ -403,7 +413,7 @@ void Foam::reconstructions::MUSCLHancock::faceState
         cellCarried(k, celli, sk);
         sk.rho = rhoc + sl.gRho.dot(de) + sl.dtRho;
         sk.p = pc + sl.gP.dot(de) + sl.dtP;
-        sk.U = Uk + toEigen(gradU_[celli]).transpose()*de + sl.dtU;
+        sk.U = Uk + toEigen(gradU(k, celli)).transpose()*de + sl.dtU;
         if (ph.solid())
         {
             // (a cell without a record: zero slopes and increment)

@@ -41,8 +41,35 @@ Foam::reconstruction::reconstruction
         limitVelocity(dict)
     ),
     gradU_(),
+    phaseU_(phases.size()),
+    phaseGradU_(phases.size()),
     firstOrderCells_(nullptr)
-{}
+{
+    forAll(phaseU_, k)
+    {
+        if (phases[k].carriesSlip())
+        {
+            phaseU_.set
+            (
+                k,
+                new volVectorField
+                (
+                    IOobject
+                    (
+                        "U." + phases.phase(k).name() + ".own",
+                        mesh_.time().timeName(),
+                        mesh_,
+                        IOobject::NO_READ,
+                        IOobject::NO_WRITE,
+                        false
+                    ),
+                    phases.U()
+                )
+            );
+            phaseGradU_[k].setSize(mesh_.nCells(), Zero);
+        }
+    }
+}
 
 
 Foam::wordList Foam::reconstruction::keywords() const
@@ -149,6 +176,40 @@ void Foam::reconstruction::velocityGradient()
             gradU_[c] -= n*(dUdn - (dUdn & n)*n);
         }
     }
+
+    // Each sliding phase's own velocity and, in the band's cells that hold
+    // it, its gradient from the neighbours that hold it: the mixture's
+    // velocity changes with the fractions across the band, and its
+    // gradient, read with one phase's velocity, puts velocity jumps on the
+    // faces between a phase's cells that its elastic waves answer with
+    // shear tractions of the order of rho c dU
+    const volVectorField& U = phases_.U();
+    forAll(phaseU_, k)
+    {
+        if (!phaseU_.set(k))
+        {
+            continue;
+        }
+        const phaseModel& phase = phases_[k];
+        const volScalarField& alpha = phases_.alpha(k);
+        volVectorField& Uk = phaseU_[k];
+        vectorField& uk = Uk.primitiveFieldRef();
+        phaseCells_.clear();
+        forAll(uk, c)
+        {
+            uk[c] = phase.velocity(U[c], c);
+            if (sliding->inBand(c) && !phases_.regimes().thin(alpha[c]))
+            {
+                phaseCells_.append(c);
+            }
+        }
+        Uk.correctBoundaryConditions();
+        gradUCalc_.calculatePresent
+        (
+            Uk, alpha, phases_.regimes().alphaMinor(), phaseCells_,
+            phaseGradU_[k]
+        );
+    }
 }
 
 
@@ -224,6 +285,17 @@ void Foam::reconstruction::cellFaceState
     cobasis::vector U(toEigen(phases_.U()[celli]));
     U += toEigen(d & gradU_[celli]);
     cellSides(celli, U, s);
+
+    // A sliding phase's own velocity gradient in the band
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if (ownVelocityGradient(k, celli))
+        {
+            const double ke = s[k].U.squaredNorm();
+            s[k].U += toEigen(d & (phaseGradU_[k][celli] - gradU_[celli]));
+            s[k].E += 0.5*(s[k].U.squaredNorm() - ke);
+        }
+    }
 }
 
 
