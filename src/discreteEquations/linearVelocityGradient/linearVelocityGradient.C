@@ -45,21 +45,10 @@ Foam::linearVelocityGradient::linearVelocityGradient
         }
     }
 
-    // Directions without extent (empty): unit diagonal, zero gradient there
-    const Vector<label>& geomD = mesh_.geometricD();
     forAll(G, celli)
     {
         symmTensor Gc(G[celli]);
-        const scalar scale = tr(Gc)/3;
-        for (direction dir = 0; dir < vector::nComponents; ++dir)
-        {
-            if (geomD[dir] < 0)
-            {
-                vector e(Zero);
-                e[dir] = 1;
-                Gc += scale*sqr(e);
-            }
-        }
+        completeEmptyDirections(Gc);
         const tensor invGc(inv(tensor(Gc)));
         invG_[celli] = symmTensor
         (
@@ -68,6 +57,35 @@ Foam::linearVelocityGradient::linearVelocityGradient
             invGc.zz()
         );
     }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::linearVelocityGradient::completeEmptyDirections
+(
+    symmTensor& G
+) const
+{
+    const Vector<label>& geomD = mesh_.geometricD();
+    const scalar scale = tr(G)/3;
+    for (direction dir = 0; dir < vector::nComponents; ++dir)
+    {
+        if (geomD[dir] < 0)
+        {
+            vector e(Zero);
+            e[dir] = 1;
+            G += scale*sqr(e);
+        }
+    }
+}
+
+
+void Foam::linearVelocityGradient::scaleColumns(tensor& g, const vector& l)
+{
+    g.xx() *= l.x(); g.yx() *= l.x(); g.zx() *= l.x();
+    g.xy() *= l.y(); g.yy() *= l.y(); g.zy() *= l.y();
+    g.xz() *= l.z(); g.yz() *= l.z(); g.zz() *= l.z();
 }
 
 
@@ -133,10 +151,7 @@ void Foam::linearVelocityGradient::calculate
         },
         [&gradU](const label celli, const vector& l)
         {
-            tensor& g = gradU[celli];
-            g.xx() *= l.x(); g.yx() *= l.x(); g.zx() *= l.x();
-            g.xy() *= l.y(); g.yy() *= l.y(); g.zy() *= l.y();
-            g.xz() *= l.z(); g.yz() *= l.z(); g.zz() *= l.z();
+            scaleColumns(gradU[celli], l);
         }
     );
 }
@@ -158,7 +173,6 @@ void Foam::linearVelocityGradient::calculatePresent
     const cellList& meshCells = mesh_.cells();
     const label nInternal = mesh_.nInternalFaces();
     const boundaryFaceTable boundaryFace(mesh_);
-    const Vector<label>& geomD = mesh_.geometricD();
 
     // The neighbouring processors' centres, velocities and fractions
     const label nPatches = mesh_.boundary().size();
@@ -239,15 +253,7 @@ void Foam::linearVelocityGradient::calculatePresent
             gradUk[celli] = Zero;
             continue;
         }
-        for (direction dir = 0; dir < vector::nComponents; ++dir)
-        {
-            if (geomD[dir] < 0)
-            {
-                vector e(Zero);
-                e[dir] = 1;
-                G += scale*sqr(e);
-            }
-        }
+        completeEmptyDirections(G);
         if (det(G) < 1e-6*pow3(scale))
         {
             G += 1e-3*scale*symmTensor(I);
@@ -299,9 +305,7 @@ void Foam::linearVelocityGradient::calculatePresent
                     l[cmpt] = min(l[cmpt], r);
                 }
             }
-            g.xx() *= l.x(); g.yx() *= l.x(); g.zx() *= l.x();
-            g.xy() *= l.y(); g.yy() *= l.y(); g.zy() *= l.y();
-            g.xz() *= l.z(); g.yz() *= l.z(); g.zz() *= l.z();
+            scaleColumns(g, l);
         }
         gradUk[celli] = g;
     }

@@ -399,7 +399,7 @@ void Foam::reconstructions::MUSCLHancock::faceState
             cobasis::vector U(toEigen(Uc) + sl.dtU);
             if (ownVelocityGradient(k, celli))
             {
-                U += toEigen(gradU(k, celli)).transpose()*de;
+                U += toEigen(phaseGradU_[k][celli]).transpose()*de;
             }
             cellSide(k, celli, U, sk);
             continue;
