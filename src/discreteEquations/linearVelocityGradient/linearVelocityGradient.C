@@ -72,11 +72,15 @@ void Foam::linearVelocityGradient::completeEmptyDirections
     symmTensor& G
 ) const
 {
-    const Vector<label>& geomD = mesh_.geometricD();
+    // The empty direction of a planar mesh, not a wedge's normal
+    // (geometricD's): the wedge images give that direction its extent, and
+    // completing it as well would halve d u_z/d z, the hoop rate u_r/r that
+    // the Hancock predictor reads (div u, A L)
+    const Vector<label>& solD = mesh_.solutionD();
     const scalar scale = tr(G)/3;
     for (direction dir = 0; dir < vector::nComponents; ++dir)
     {
-        if (geomD[dir] < 0)
+        if (solD[dir] < 0)
         {
             vector e(Zero);
             e[dir] = 1;

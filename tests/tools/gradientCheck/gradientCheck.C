@@ -240,16 +240,17 @@ int main(int argc, char *argv[])
             }
         }
     }
-    // The derivatives along and of the directions with extent only (a
-    // wedge's normal has none: both gradients complete it alike)
-    const Vector<label>& geomD = mesh.geometricD();
-    const auto inPlane = [&geomD](tensor t)
+    // The derivatives along and of the directions with extent: on a planar
+    // mesh those in its plane; on a wedge all three (the wedge images give
+    // its normal extent: u = a x has the hoop rate u_r/r = a there)
+    const Vector<label>& solD = mesh.solutionD();
+    const auto inPlane = [&solD](tensor t)
     {
         for (direction i = 0; i < 3; ++i)
         {
             for (direction j = 0; j < 3; ++j)
             {
-                if (geomD[i] < 0 || geomD[j] < 0) t(i, j) = 0;
+                if (solD[i] < 0 || solD[j] < 0) t(i, j) = 0;
             }
         }
         return t;
