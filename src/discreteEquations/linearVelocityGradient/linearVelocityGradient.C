@@ -285,10 +285,8 @@ void Foam::linearVelocityGradient::calculatePresent
             // parallel run of V15a's closed box part by 4e-1 without the
             // margin, by 1e-8 with it. Overshoots within the margin are
             // left alone
-            const vector margin
-            (
-                vector::uniform(marginFraction_*cmptMax(vMax - vMin) + VSMALL)
-            );
+            const scalar margin =
+                marginFraction_*cmptMax(vMax - vMin) + VSMALL;
             vector l(vector::one);
             for (const label facei : meshCells[celli])
             {
@@ -307,8 +305,8 @@ void Foam::linearVelocityGradient::calculatePresent
                 const vector dv((Cf[facei] - C[celli]) & g);
                 for (direction cmpt = 0; cmpt < vector::nComponents; ++cmpt)
                 {
-                    const scalar up = vMax[cmpt] - uc[cmpt] + margin[cmpt];
-                    const scalar down = vMin[cmpt] - uc[cmpt] - margin[cmpt];
+                    const scalar up = vMax[cmpt] - uc[cmpt] + margin;
+                    const scalar down = vMin[cmpt] - uc[cmpt] - margin;
                     if (dv[cmpt] > up)
                     {
                         l[cmpt] = min(l[cmpt], up/dv[cmpt]);

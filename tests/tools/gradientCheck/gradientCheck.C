@@ -244,7 +244,7 @@ int main(int argc, char *argv[])
     // mesh those in its plane; on a wedge all three (the wedge images give
     // its normal extent: u = a x has the hoop rate u_r/r = a there)
     const Vector<label>& solD = mesh.solutionD();
-    const auto inPlane = [&solD](tensor t)
+    const auto withExtent = [&solD](tensor t)
     {
         for (direction i = 0; i < 3; ++i)
         {
@@ -270,7 +270,7 @@ int main(int argc, char *argv[])
                 phaseErr[limited] = max
                 (
                     phaseErr[limited],
-                    mag(inPlane(gK[c] - exact))/mag(inPlane(exact))
+                    mag(withExtent(gK[c] - exact))/mag(withExtent(exact))
                 );
             }
             else if (gK[c] != sentinel)
@@ -309,7 +309,7 @@ int main(int argc, char *argv[])
     {
         mixtureErr = max
         (
-            mixtureErr, mag(inPlane(gAll[c] - exact))/mag(inPlane(exact))
+            mixtureErr, mag(withExtent(gAll[c] - exact))/mag(withExtent(exact))
         );
     }
     reduce(mixtureErr, maxOp<scalar>());
