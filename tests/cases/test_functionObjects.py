@@ -19,8 +19,8 @@ not wedges, bodyExtent of the copper:
   fo_wallForce_impulse        the sum of the patches' axial impulses from
                               1 to 4 us equals the axial momentum change
                               of the material (copper and air, from the
-                              written fields, times 2 pi over the wedge
-                              angle: the full circle) to 1e-11 of the
+                              written fields, times 2 pi over the sine
+                              of the wedge angle: the full circle) to 1e-11 of the
                               bar's momentum (2e-12 seen: the round-off
                               of the cells' updates over 120 steps)
   fo_wallForce_steps          each row's impulse change is its force times
@@ -240,14 +240,16 @@ def momentum(case, m, time_name, phases):
 
 
 def wedge_to_full(m):
-    """2 pi over the wedge angle, from the two wedge patches' normals"""
+    """2 pi over the sine of the wedge angle (a flat-faced wedge cell of
+    angle theta holds sin(theta)/(2 pi) of its ring), the angle from the
+    two wedge patches' normals"""
     normals = []
     for name, kind, start, size in m.patches:
         if kind == "wedge":
             n = m.Sf[start]
             normals.append(n / np.linalg.norm(n))
     angle = math.acos(min(1.0, max(-1.0, -float(np.dot(*normals)))))
-    return 2 * math.pi / angle
+    return 2 * math.pi / math.sin(angle)
 
 
 def taylor_case(name, parallel=False):

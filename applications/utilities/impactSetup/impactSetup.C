@@ -137,6 +137,7 @@ int main(int argc, char *argv[])
     );
 
     problem.setFields(mesh);
+    problem.writeOutputs(mesh);
 
     inputDefaults::print(Info);
     problem.files().list(Info);

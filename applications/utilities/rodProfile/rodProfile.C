@@ -43,6 +43,7 @@ Usage
 #include "fvCFD.H"
 #include "phaseSystem.H"
 #include "rodMeasures.H"
+#include "wedgeRevolution.H"
 #include "OFstream.H"
 #include "foamEigen.H"
 
@@ -70,8 +71,12 @@ int main(int argc, char *argv[])
     scalar R0 = args.getOrDefault<scalar>("R0", -1);
     const scalar tolerance = args.getOrDefault<scalar>("tolerance", 0.01);
 
-    const scalar angle = rodMeasures::meshAngle(mesh);
-    const scalar toFull = constant::mathematical::twoPi/angle;
+    vector wedgeAxis;
+    scalar toFull = wedgeToFull(mesh, wedgeAxis);
+    if (toFull == 0)
+    {
+        toFull = 1;
+    }
 
     const fileName outDir(mesh.time().globalPath()/"postProcessing"/"rodProfile");
     mkDir(outDir);

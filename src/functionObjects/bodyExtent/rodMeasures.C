@@ -1,5 +1,4 @@
 #include "rodMeasures.H"
-#include "wedgePolyPatch.H"
 #include "mathematicalConstants.H"
 #include <map>
 #include <algorithm>
@@ -155,25 +154,6 @@ Foam::rodMeasures::rodMeasures
     maxRadius = result[1];
     faceRadius = result[2];
     zMin = result[3];
-}
-
-
-// * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
-
-Foam::scalar Foam::rodMeasures::meshAngle(const fvMesh& mesh)
-{
-    scalar angle = 0;
-    for (const polyPatch& pp : mesh.boundaryMesh())
-    {
-        if (isA<wedgePolyPatch>(pp) && pp.size())
-        {
-            const scalar c = refCast<const wedgePolyPatch>(pp).cosAngle();
-            angle = 2*std::acos(min(max(c, -1.0), 1.0));
-            break;
-        }
-    }
-    reduce(angle, maxOp<scalar>());
-    return angle > 0 ? angle : constant::mathematical::twoPi;
 }
 
 

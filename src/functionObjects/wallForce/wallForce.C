@@ -1,6 +1,6 @@
 #include "wallForce.H"
 #include "wallPolyPatch.H"
-#include "wedgePolyPatch.H"
+#include "wedgeRevolution.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -30,25 +30,7 @@ Foam::functionObjects::wallForce::wallForce
 {
     wallForce::read(dict);
 
-    // A wedge mesh: its axis and angle (from a wedge patch that has faces)
-    scalar angle = 0;
-    for (const polyPatch& pp : mesh_.boundaryMesh())
-    {
-        if (isA<wedgePolyPatch>(pp) && pp.size())
-        {
-            const wedgePolyPatch& w = refCast<const wedgePolyPatch>(pp);
-            axis_ = w.axis();
-            angle = 2*std::acos(min(max(w.cosAngle(), -1.0), 1.0));
-            break;
-        }
-    }
-    reduce(angle, maxOp<scalar>());
-    reduce(axis_, maxMagSqrOp<vector>());
-    if (angle > 0)
-    {
-        axis_ /= mag(axis_);
-        toFull_ = constant::mathematical::twoPi/angle;
-    }
+    toFull_ = wedgeToFull(mesh_, axis_);
 
     start();
 }

@@ -335,14 +335,15 @@ Foam::impactProblem::impactProblem
     hasDomain_(false),
     min_(Zero),
     max_(Zero),
-    cellSize_(0)
+    cellSize_(0),
+    interval_(0)
 {
     checkKeywords
     (
         dict_,
         {
             "geometry", "domain", "ambient", "bodies", "phaseProperties",
-            "contacts"
+            "contacts", "outputs"
         },
         "impactDict"
     );
@@ -365,6 +366,7 @@ Foam::impactProblem::impactProblem
     readPhaseProperties();
     resolveMaterials();
     placeBodies();
+    readOutputs();
 }
 
 
