@@ -19,6 +19,13 @@ command-line convention, rerun-safe, and committed files never touched.
                               spallPlate, hypervelocityImpact, closedBox
                               on 2 processes, templates/projectileOnPlate,
                               longRodPenetration, rigidPenetration)
+  tutorialScripts_keep_files  the template with a file of the user's in 0/
+                              and a log.mine: ./Allrun and ./Allclean keep
+                              both, and remove every log Allrun wrote
+  tutorialScripts_keep_mesh   the same case made to use its own mesh (the
+                              domain entry and impactSetup's blockMeshDict
+                              removed): ./Allrun runs on it and ./Allclean
+                              keeps it, byte for byte
 About a minute.
 """
 import filecmp
@@ -176,6 +183,55 @@ def check_clean(checks):
                         "failed: " + out[-300:], why))
 
 
+def check_keep(checks):
+    """The user's files survive Allrun and Allclean: the template with a
+    note in 0/ and a log of the user's (domain mode), and then with the
+    user's own mesh (no domain entry: the mesh made once, the domain entry
+    and impactSetup's blockMeshDict removed)."""
+    case = fc.copy_tutorial("templates/projectileOnPlate",
+                            "tutorialScripts_keep")
+    mine = {"0/notes": "the user's notes\n", "log.mine": "the user's log\n"}
+    for name, text in mine.items():
+        os.makedirs(os.path.dirname(os.path.join(case, name)), exist_ok=True)
+        with open(os.path.join(case, name), "w") as f:
+            f.write(text)
+    opts = ["-h", "2", "-end", "1e-7", "-noPlot"]
+    code, out = script(case, ["./Allrun"] + opts)
+    code2, _ = script(case, ["./Allclean"])
+    kept = all(open(os.path.join(case, n)).read() == t
+               for n, t in mine.items()
+               if os.path.isfile(os.path.join(case, n)))
+    kept = kept and all(os.path.isfile(os.path.join(case, n)) for n in mine)
+    logs = sorted(n for n in os.listdir(case) if n.startswith("log."))
+    checks.check("tutorialScripts_keep_files",
+                 code == 0 and code2 == 0 and kept and logs == ["log.mine"],
+                 "./Allrun %s exit %d, ./Allclean exit %d; the user's 0/notes "
+                 "and log.mine kept: %s; logs left: %s"
+                 % (" ".join(opts), code, code2, kept, logs))
+
+    # The user's own mesh: impactDict without a domain
+    code, out = script(case, ["impactSetup", "-cellSize", "2e-3"])
+    os.remove(os.path.join(case, "system", "blockMeshDict"))
+    path = os.path.join(case, "system", "impactDict")
+    with open(path) as f:
+        text = f.read()
+    i = text.index("\ndomain\n")
+    j = text.index("\n}\n", i) + 3
+    with open(path, "w") as f:
+        f.write(text[:i] + "\n" + text[j:])
+    points = os.path.join(case, "constant", "polyMesh", "points")
+    before = open(points).read()
+    code2, out2 = script(case, ["./Allrun", "-end", "1e-7", "-noPlot"])
+    ran = code2 == 0 and len(fc.time_dirs(case)) > 1
+    code3, _ = script(case, ["./Allclean"])
+    kept = os.path.isfile(points) and open(points).read() == before
+    checks.check("tutorialScripts_keep_mesh",
+                 code == 0 and ran and code3 == 0 and kept,
+                 "impactDict without a domain on the user's mesh: ./Allrun "
+                 "%s; ./Allclean exit %d; the mesh kept unchanged: %s"
+                 % ("ran" if ran else "failed: " + out2[-300:], code3, kept))
+
+
 def main():
     checks = Checks()
     missing = fc.require_apps("impactFoam", "blockMesh", "setFields")
@@ -185,6 +241,7 @@ def main():
     check_help(checks)
     check_rerun(checks)
     check_clean(checks)
+    check_keep(checks)
     checks.exit()
 
 
