@@ -34,6 +34,8 @@ Description
 #include "bodyForces.H"
 #include "stepControl.H"
 #include "stepReport.H"
+#include "progressLog.H"
+#include "controlDictCheck.H"
 #include "inputDefaults.H"
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -78,6 +80,9 @@ int main(int argc, char *argv[])
         }
         runTime.setEndTime(endTimeOption);
     }
+    // A misspelled entry stops here, before the mesh is read
+    checkControlDict(runTime);
+
     #include "createMesh.H"
 
     phaseSystem phases(mesh);
@@ -87,6 +92,7 @@ int main(int argc, char *argv[])
     bodyForces forces(mesh);
     stepControl step(runTime, phases, dem, relaxation, forces);
     stepReport report(phases, relaxation, dem, voidCells);
+    progressLog progress(runTime, phases);
 
     // The defaults the models took for entries not given, in one block
     inputDefaults::print(Info);
@@ -130,6 +136,7 @@ int main(int argc, char *argv[])
         {
             report.logTotals(false);
         }
+        progress.step();
     }
 
     // The final state, also when endTime is not a write time
@@ -140,6 +147,7 @@ int main(int argc, char *argv[])
     }
 
     dem.fallback().report();
+    progress.summary(report.unpaidEnergy());
     runTime.printExecutionTime(Info);
 
     Info<< "End\n" << endl;

@@ -1,6 +1,7 @@
 #include "stepControl.H"
 #include "stepLedger.H"
 #include "landingDeltaT.H"
+#include "inputDefaults.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -22,23 +23,33 @@ Foam::stepControl::stepControl
     (
         // Default: 0.6 at second order, 0.4 at first (0.8 of its limit
         // 0.5); docs/numerics.md 6.1
-        runTime.controlDict().getOrDefault<scalar>
+        inputDefaults::get<scalar>
         (
-            "maxCo", min(scalar(0.6), 0.8*dem.maxCourant())
+            runTime.controlDict(), "maxCo",
+            min(scalar(0.6), 0.8*dem.maxCourant()), "controlDict"
         )
     ),
     maxDeltaT_
     (
-        runTime.controlDict().getOrDefault<scalar>("maxDeltaT", GREAT)
+        inputDefaults::get<scalar>
+        (
+            runTime.controlDict(), "maxDeltaT", GREAT, "controlDict"
+        )
     ),
     dtFactor_(1),
     minDtFactor_
     (
-        runTime.controlDict().getOrDefault<scalar>("minDeltaTFactor", 1.0/64)
+        inputDefaults::get<scalar>
+        (
+            runTime.controlDict(), "minDeltaTFactor", 1.0/64, "controlDict"
+        )
     ),
     debugDeltaT_
     (
-        runTime.controlDict().getOrDefault<bool>("debugDeltaT", false)
+        inputDefaults::get<bool>
+        (
+            runTime.controlDict(), "debugDeltaT", false, "controlDict"
+        )
     ),
     pendingWrite_(-1),
     oldTime_(runTime.value()),

@@ -1,4 +1,5 @@
 #include "impactTimeHistory.H"
+#include "keywordCheck.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -11,7 +12,8 @@ Foam::functionObjects::impactTimeHistory::impactTimeHistory
 :
     fvMeshFunctionObject(name, runTime, dict),
     writeFile(mesh_, name, name, true),
-    lastIndex_(-1)
+    lastIndex_(-1),
+    dict_(dict)
 {
     impactTimeHistory::read(dict);
     resetFile(name);
@@ -61,6 +63,18 @@ Foam::label Foam::functionObjects::impactTimeHistory::phaseIndex
 
 void Foam::functionObjects::impactTimeHistory::start()
 {
+    // Strict like every other dictionary: the entries OpenFOAM's function
+    // objects read, and the derived class's
+    wordList valid
+    ({
+        "type", "libs", "enabled", "log", "timeStart", "timeEnd",
+        "executeControl", "executeInterval", "writeControl",
+        "writeInterval", "outputControl", "outputInterval", "region",
+        "writePrecision", "writeToFile", "useUserTime", "updateHeader"
+    });
+    valid.append(keywords());
+    checkKeywords(dict_, valid, "Function object " + name());
+
     write();
 }
 

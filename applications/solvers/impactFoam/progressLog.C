@@ -1,0 +1,178 @@
+#include "progressLog.H"
+#include "inputDefaults.H"
+#include "wedgeRevolution.H"
+#include "OStringStream.H"
+#include "OSspecific.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::progressLog::progressLog
+(
+    const Time& runTime,
+    const phaseSystem& phases
+)
+:
+    runTime_(runTime),
+    phases_(phases),
+    interval_
+    (
+        inputDefaults::get<scalar>
+        (
+            runTime.controlDict(), "progressInterval", 10, "controlDict"
+        )
+    ),
+    clock_(),
+    lastLine_(0),
+    startTime_(runTime.value()),
+    startIndex_(runTime.timeIndex()),
+    kinetic0_(kineticEnergy())
+{
+    if (interval_ < 0)
+    {
+        FatalIOErrorInFunction(runTime.controlDict())
+            << "progressInterval " << interval_ << " in "
+            << runTime.controlDict().name() << ": give the wall-clock"
+            << " seconds between progress lines, or 0 for none"
+            << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::progressLog::kineticEnergy() const
+{
+    const scalarField& V = phases_.mesh().V();
+    const vectorField& U = phases_.U().primitiveField();
+    scalar K = 0;
+    forAll(phases_, k)
+    {
+        const scalarField& alpha = phases_.alpha(k).primitiveField();
+        const scalarField& rho = phases_.rho(k).primitiveField();
+        forAll(V, c)
+        {
+            K += 0.5*alpha[c]*rho[c]*V[c]
+               *magSqr(phases_[k].velocity(U[c], c));
+        }
+    }
+    return returnReduce(K, sumOp<scalar>());
+}
+
+
+Foam::string Foam::progressLog::micro(const scalar t)
+{
+    OStringStream os;
+    os.precision(3);
+    os << t*1e6 << " us";
+    return os.str();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::progressLog::step()
+{
+    const scalar wall = clock_.elapsedTime();
+    if (interval_ <= 0 || wall - lastLine_ < interval_)
+    {
+        return;
+    }
+    lastLine_ = wall;
+
+    const scalar t = runTime_.value();
+    const scalar tEnd = runTime_.endTime().value();
+    const label steps = runTime_.timeIndex() - startIndex_;
+    const scalar done = (t - startTime_)/max(tEnd - startTime_, VSMALL);
+    const scalar rate = (t - startTime_)/max(wall, VSMALL);
+
+    OStringStream os;
+    os.precision(3);
+    os  << "Progress: t = " << micro(t).c_str() << ", "
+        << label(100*min(done, 1.0)) << " % of " << micro(tEnd).c_str()
+        << "; " << steps << " steps, " << steps/max(wall, VSMALL)
+        << " steps/s; " << wall << " s elapsed";
+    if (rate > 0)
+    {
+        os  << ", about " << max(tEnd - t, 0.0)/rate << " s left";
+    }
+    Info<< os.str().c_str() << endl;
+}
+
+
+void Foam::progressLog::summary(const scalar unpaid) const
+{
+    const fvMesh& mesh = phases_.mesh();
+    vector axis;
+    const scalar toFull = wedgeToFull(mesh, axis);
+    const scalar factor = toFull > 0 ? toFull : 1;
+
+    const scalarField& V = mesh.V();
+    const vectorField& U = phases_.U().primitiveField();
+    const label n = phases_.size();
+    List<scalar> mass(n, Zero);
+    List<vector> momentum(n, Zero);
+    forAll(phases_, k)
+    {
+        const scalarField& alpha = phases_.alpha(k).primitiveField();
+        const scalarField& rho = phases_.rho(k).primitiveField();
+        forAll(V, c)
+        {
+            const scalar m = alpha[c]*rho[c]*V[c];
+            mass[k] += m;
+            momentum[k] += m*phases_[k].velocity(U[c], c);
+        }
+    }
+    Pstream::listCombineGather(mass, plusEqOp<scalar>());
+    Pstream::listCombineGather(momentum, plusEqOp<vector>());
+
+    OStringStream os;
+    os.precision(6);
+    os  << nl << "Summary at t = " << runTime_.value() << " s ("
+        << runTime_.timeIndex() - startIndex_ << " steps, "
+        << clock_.elapsedTime() << " s)"
+        << (toFull > 0 ? "; the full body of revolution" : "") << nl;
+    forAll(phases_, k)
+    {
+        vector p(factor*momentum[k]);
+        if (toFull > 0)
+        {
+            // Around the circle only the axial part is left (+ 0: no
+            // negative zero)
+            p = (p & axis)*axis + vector::zero;
+        }
+        const scalar m = factor*mass[k];
+        os  << "    " << phases_.names()[k].c_str() << ": mass " << m
+            << " kg, momentum " << p << " kg m/s, mean velocity "
+            << (m > 0 ? p/m : vector::zero) << " m/s" << nl;
+    }
+    os  << "    energy added without a payer " << factor*unpaid << " J";
+    if (kinetic0_ > 0)
+    {
+        os  << " (" << unpaid/kinetic0_ << " of the initial kinetic energy)";
+    }
+    os  << nl;
+
+    // Where the results are
+    const fileName& path = runTime_.path();
+    const fileName root
+    (
+        Pstream::parRun() ? runTime_.globalPath() : path
+    );
+    os  << "    fields: the time directories of " << root.c_str()
+        << (Pstream::parRun() ? " (processor*; reconstructPar)" : "");
+    if (isDir(root/"postProcessing"))
+    {
+        os  << nl << "    time histories: " << (root/"postProcessing").c_str()
+            << " (";
+        const fileNameList dirs(readDir(root/"postProcessing", fileName::DIRECTORY));
+        forAll(dirs, i)
+        {
+            os  << (i ? " " : "") << dirs[i].c_str();
+        }
+        os  << ")";
+    }
+    Info<< os.str().c_str() << nl << endl;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,203 @@
+#!/usr/bin/python3
+"""What a run tells its user (docs/numerics.md 10.9): progress lines at a
+wall-clock interval, a summary at the end, the terminal of ./Allrun, and a
+strict controlDict and function objects.
+
+The projectileOnPlate template on 1 mm cells (axisymmetric), to 3 us.
+
+Checks
+  runLog_progress   with progressInterval 1e-9 (a line after every step):
+                    one Progress line per step, the simulated times rising
+                    to "100 % of 3 us" at the last, steps/s and the time
+                    left on each
+  runLog_summary    the summary's mass and mean axial velocity of each
+                    phase equal those of the written fields at the end
+                    (sum alpha rho V times 2 pi/sin(theta) of the wedge;
+                    to the 6 printed digits: 6e-6), and it names the time
+                    histories' directory
+  runLog_defaults   progressInterval, not given, is listed with its default
+                    (controlDict: progressInterval 10) among the defaults
+                    printed at start-up
+  runLog_terminal   ./Allrun's own output (the terminal) shows Progress
+                    lines while the solver runs and the summary at its end
+  runLog_error_<what>  the run stops before its first step, naming the entry
+                    and the nearest keyword: maxCO in the controlDict,
+                    adjustTimeStep no, piont in a function object, a
+                    negative progressInterval
+About 30 s.
+"""
+import math
+import os
+import re
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "lib"))
+import foamcase as fc                         # noqa: E402
+import meshGeometry as mg                     # noqa: E402
+from checks import Checks                     # noqa: E402
+
+checks = Checks()
+RUN = os.path.join(HERE, "..", "run", "runLog")
+TEMPLATE = "templates/projectileOnPlate"
+END = 3e-6
+
+
+def new_case(name, control=None):
+    """The template set up on 1 mm cells; control: text put before the
+    controlDict's functions entry"""
+    case = fc.copy_tutorial(TEMPLATE, name, run_dir=RUN)
+    if control:
+        path = os.path.join(case, "system", "controlDict")
+        with open(path) as f:
+            text = f.read()
+        i = text.index("functions")
+        with open(path, "w") as f:
+            f.write(text[:i] + control + "\n" + text[i:])
+    fc.run(case, ["impactSetup", "-cellSize", "1e-3"])
+    return case
+
+
+def wedge_to_full(m):
+    normals = [m.Sf[start] / np.linalg.norm(m.Sf[start])
+               for name, kind, start, size in m.patches if kind == "wedge"]
+    angle = math.acos(min(1.0, max(-1.0, -float(np.dot(*normals)))))
+    return 2 * math.pi / math.sin(angle)
+
+
+def check_run():
+    case = new_case("progress", "progressInterval 1e-9;")
+    log = fc.run(case, ["impactFoam", "-endTime", "%g" % END])
+    with open(log) as f:
+        text = f.read()
+
+    steps = len(re.findall(r"^Time = ", text, re.M))
+    lines = re.findall(r"^Progress: t = ([0-9.e+-]+) us, (\d+) % of "
+                       r"([0-9.e+-]+) us; (\d+) steps, ([0-9.e+-]+) steps/s;"
+                       r" ([0-9.e+-]+) s elapsed, about ([0-9.e+-]+) s left$",
+                       text, re.M)
+    times = [float(l[0]) for l in lines]
+    ok = steps > 10 and len(lines) == steps and \
+        all(b > a for a, b in zip(times, times[1:])) and \
+        lines[-1][1] == "100" and abs(float(lines[-1][2]) - END * 1e6) \
+        <= 1e-9 and int(lines[-1][3]) == steps
+    checks.check("runLog_progress", ok,
+                 "%d steps, %d Progress lines, the last: %s"
+                 % (steps, len(lines), lines[-1] if lines else None))
+
+    # The summary against the fields at the end
+    m = mg.read_polymesh(case)
+    toFull = wedge_to_full(m)
+    t = fc.latest_time(case)
+    U = fc.read_field(case, t, "U")
+    block = text[text.index("Summary at"):]
+    worst = 0.0
+    seen = []
+    for ph in ("rod", "plate", "air"):
+        a = fc.read_field(case, t, "alpha." + ph)
+        rho = fc.read_field(case, t, "rho." + ph)
+        mc = a * rho * m.V
+        mass = toFull * mc.sum()
+        Ux = (mc * U[:, 0]).sum() / mc.sum()
+        r = re.search(r"^\s+%s: mass ([0-9.e+-]+) kg, momentum \(([^)]*)\) "
+                      r"kg m/s, mean velocity \(([^)]*)\) m/s$" % ph, block,
+                      re.M)
+        if not r:
+            worst = 1.0
+            continue
+        seen.append(ph)
+        worst = max(worst, abs(float(r.group(1)) / mass - 1))
+        ux = float(r.group(3).split()[0])
+        worst = max(worst, abs(ux - Ux) / max(abs(Ux), 1.0))
+    names = "time histories: " in block and "rodPenetration" in block
+    checks.check("runLog_summary", worst <= 6e-6 and names,
+                 "phases %s; largest relative difference of the mass and "
+                 "mean velocity from the fields %.1e (bound 6e-6: 6 "
+                 "digits); names the time histories: %s"
+                 % (seen, worst, names))
+
+    defaults = re.search(r"controlDict: progressInterval", text)
+    case2 = new_case("defaults")
+    log2 = fc.run(case2, ["impactFoam", "-endTime", "1e-7"])
+    with open(log2) as f:
+        text2 = f.read()
+    noted = "controlDict: progressInterval 10" in text2
+    checks.check("runLog_defaults", noted and not defaults,
+                 "listed when not given: %s; not listed when given: %s"
+                 % (noted, not defaults))
+
+
+def check_terminal():
+    case = fc.copy_tutorial(TEMPLATE, "terminal", run_dir=RUN)
+    path = os.path.join(case, "system", "controlDict")
+    with open(path) as f:
+        text = f.read()
+    i = text.index("functions")
+    with open(path, "w") as f:
+        f.write(text[:i] + "progressInterval 0.5;\n" + text[i:])
+    log = fc.run(case, ["./Allrun", "-h", "0.5", "-end", "6e-6", "-noPlot"],
+                 log="log.terminal")
+    with open(log) as f:
+        out = f.read()
+    progress = re.findall(r"^    Progress: t = .*$", out, re.M)
+    summary = re.search(r"^Summary at t = 6e-06 s", out, re.M)
+    checks.check("runLog_terminal", progress and summary,
+                 "%d Progress lines on the terminal (the last: %s); "
+                 "summary shown: %s" % (len(progress), progress[-1].strip()
+                                        if progress else None,
+                                        bool(summary)))
+
+
+ERRORS = [
+    ("maxCO", "maxCO 0.5;", ["unknown entry maxCO", "did you mean maxCo"]),
+    ("adjustTimeStep", "adjustTimeStep no;", ["adjustTimeStep no",
+                                              "maxCo"]),
+    ("progressInterval", "progressInterval -1;", ["progressInterval -1"]),
+]
+
+
+def check_errors():
+    for what, entry, expect in ERRORS:
+        case = new_case("error_" + what, entry)
+        log = fc.run(case, ["impactFoam", "-endTime", "1e-7"], check=False)
+        with open(log) as f:
+            out = " ".join(f.read().split())
+        missing = [e for e in expect if e not in out]
+        ok = "FOAM FATAL" in out and not missing and "Time = " not in out
+        checks.check("runLog_error_" + what, ok,
+                     "missing %s; %s" % (missing, out[out.find("FOAM FATAL"):]
+                                         [:240]))
+    # A function object's misspelled entry
+    case = new_case("error_functionObject")
+    path = os.path.join(case, "system", "impactOutputs")
+    with open(path) as f:
+        text = f.read()
+    text = text.replace("point ", "piont ", 1)
+    with open(path, "w") as f:
+        f.write(text)
+    log = fc.run(case, ["impactFoam", "-endTime", "1e-7"], check=False)
+    with open(log) as f:
+        out = " ".join(f.read().split())
+    expect = ["Function object rodPenetration", "unknown entry piont",
+              "did you mean point"]
+    missing = [e for e in expect if e not in out]
+    checks.check("runLog_error_functionObject",
+                 "FOAM FATAL" in out and not missing,
+                 "missing %s; %s" % (missing, out[out.find("FOAM FATAL"):]
+                                     [:240]))
+
+
+def main():
+    fc.require_apps("impactSetup", "impactFoam", "blockMesh")
+    for step in (check_run, check_terminal, check_errors):
+        try:
+            step()
+        except fc.FoamError as e:
+            checks.fail("runLog_" + step.__name__[6:], e.summary or str(e))
+    checks.exit()
+
+
+if __name__ == "__main__":
+    main()
