@@ -37,6 +37,9 @@ Checks
                     earlier's volume where they overlap: the earlier's
                     volume is its own less the common part, the sum of the
                     fractions stays 1
+  impactSetup_variables  a top-level entry used as $name (rodU, the rod's U)
+                    is read into the body and dropped; impactSetup_error_
+                    unusedVariable: an entry nobody uses stops as unknown
   impactSetup_gap   a sphere placed by a gap of 0.7 mm from a half-space
                     sits 0.7 mm from it (its volume's centre measured from
                     alpha)
@@ -811,6 +814,45 @@ def check_template():
         checks.fail("impactSetup_template", e.summary or str(e))
 
 
+def check_variables():
+    """A top-level entry used as $name is a variable: read, then dropped;
+    one nobody uses is an unknown entry."""
+    case = fc.copy_tutorial("templates/projectileOnPlate",
+                            "impactSetup_variables", run_dir=RUN)
+    path = os.path.join(case, "system", "impactDict")
+    with open(path) as f:
+        text = f.read()
+    text = text.replace("geometry    axisymmetric;",
+                        "rodU        (-1800 0 0);    // $rodU in a comment\n"
+                        "geometry    axisymmetric;", 1)
+    text = text.replace("U           (-1500 0 0);", "U           $rodU;", 1)
+    with open(path, "w") as f:
+        f.write(text)
+    try:
+        fc.run(case, ["impactSetup", "-cellSize", "2e-3"])
+        U = fc.read_field(case, "0", "U")
+        a = fc.read_field(case, "0", "alpha.rod")
+        inside = a > 0.999
+        ok = inside.any() and np.allclose(U[inside, 0], -1800, rtol=1e-9)
+        checks.check("impactSetup_variables", ok,
+                     "U $rodU with rodU (-1800 0 0) at the top level: Ux in "
+                     "the cells the rod fills %s"
+                     % (np.unique(np.round(U[inside, 0], 6))[:3]))
+    except fc.FoamError as e:
+        checks.fail("impactSetup_variables", e.summary or str(e))
+
+    with open(path, "w") as f:
+        f.write(text.replace("rodU        (-1800 0 0);",
+                             "rodU        (-1800 0 0);\nrodV 1;", 1))
+    log = fc.run(case, ["impactSetup", "-cellSize", "2e-3"], check=False)
+    with open(log) as f:
+        out = " ".join(f.read().split())
+    checks.check("impactSetup_error_unusedVariable",
+                 "FOAM FATAL" in out and "unknown entry rodV" in out,
+                 "an unused top-level entry rodV: %s"
+                 % out[out.find("impactDict:"):][:160])
+
+
 def check_unstructured():
     """Without a domain, on meshes blockMesh does not make: jittered
     triangular prisms (planar) and tetrahedra (threeD), tests/lib/triMesh.py.
@@ -866,6 +908,7 @@ def main():
         checks.fail("impactSetup_radialVelocity", e.summary or str(e))
     check_copper_rods()
     check_template()
+    check_variables()
     check_unstructured()
     check_volumes()
     checks.exit()

@@ -18,7 +18,11 @@ Foam::stepReport::stepReport
     unpaidTotal_(0),
     frictionTotal_(0),
     ledger_(phases)
-{}
+{
+    // A restarted run carries on the tallies of the run before it
+    unpaidTotal_ = ledger_.unpaidEnergy();
+    frictionTotal_ = ledger_.frictionalHeat();
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

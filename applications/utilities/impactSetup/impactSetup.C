@@ -82,6 +82,40 @@ int main(int argc, char *argv[])
     dictionary impactDict(dictStream);
     impactDict.remove("FoamFile");
 
+    // Variables: a top-level entry the file uses as $name has done its work
+    // once the dictionary is read (an entry nobody uses still stops the
+    // reader as unknown)
+    {
+        IFstream is(dictFile);
+        string text, line;
+        while (is.good())
+        {
+            is.getLine(line);
+            // (comments do not count as uses)
+            text += line.substr(0, line.find("//")) + "\n";
+        }
+        const wordList keys(impactDict.toc());
+        for (const word& key : keys)
+        {
+            if (impactProblem::keywords.found(key))
+            {
+                continue;
+            }
+            const string use("$" + key);
+            auto pos = text.find(use);
+            while (pos != string::npos)
+            {
+                const auto end = pos + use.size();
+                if (end == text.size() || !(isalnum(text[end]) || text[end] == '_'))
+                {
+                    impactDict.remove(key);
+                    break;
+                }
+                pos = text.find(use, end);
+            }
+        }
+    }
+
     scalar cellSize = 0;
     if (args.readIfPresent("cellSize", cellSize))
     {

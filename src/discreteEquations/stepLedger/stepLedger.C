@@ -1,4 +1,5 @@
 #include "stepLedger.H"
+#include "IFstream.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -18,9 +19,10 @@ Foam::stepLedger::stepLedger(const phaseSystem& phases)
         (
             typeName,
             phases.mesh().time().timeName(),
+            "uniform",
             phases.mesh(),
             IOobject::NO_READ,
-            IOobject::NO_WRITE,
+            IOobject::AUTO_WRITE,
             true
         )
     ),
@@ -31,7 +33,47 @@ Foam::stepLedger::stepLedger(const phaseSystem& phases)
     patchImpulses_(phases.mesh().boundary().size(), Zero),
     unpaidEnergy_(0),
     frictionalHeat_(0)
-{}
+{
+    readRestart();
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::stepLedger::readRestart()
+{
+    const fvMesh& mesh = phases_.mesh();
+    IOobject io
+    (
+        typeName,
+        mesh.time().timeName(),
+        "uniform",
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    const fileName file(io.objectPath());
+    if (!isFile(file))
+    {
+        return;
+    }
+    IFstream is(file);
+    const dictionary dict(is);
+    unpaidEnergy_ = dict.get<scalar>("unpaidEnergy");
+    frictionalHeat_ = dict.get<scalar>("frictionalHeat");
+
+    // The impulses are the whole domain's: held by the master alone (the
+    // function objects sum them over the processors)
+    const dictionary& impulses = dict.subDict("patchImpulses");
+    const polyBoundaryMesh& pbm = mesh.boundaryMesh();
+    for (label patchi = 0; patchi < pbm.nNonProcessor(); ++patchi)
+    {
+        vector I(Zero);
+        impulses.readIfPresent(pbm[patchi].name(), I);
+        patchImpulses_[patchi] = Pstream::master() ? I : vector::zero;
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -53,6 +95,26 @@ void Foam::stepLedger::accept
     }
     unpaidEnergy_ = unpaidEnergy;
     frictionalHeat_ = frictionalHeat;
+}
+
+
+bool Foam::stepLedger::writeData(Ostream& os) const
+{
+    const polyBoundaryMesh& pbm = phases_.mesh().boundaryMesh();
+    const label n = pbm.nNonProcessor();
+    vectorField impulses(SubField<vector>(patchImpulses_, n));
+    Pstream::listCombineGather(impulses, plusEqOp<vector>());
+    Pstream::listCombineScatter(impulses);
+
+    os.writeEntry("unpaidEnergy", unpaidEnergy_);
+    os.writeEntry("frictionalHeat", frictionalHeat_);
+    os.beginBlock("patchImpulses");
+    for (label patchi = 0; patchi < n; ++patchi)
+    {
+        os.writeEntry(pbm[patchi].name(), impulses[patchi]);
+    }
+    os.endBlock();
+    return os.good();
 }
 
 

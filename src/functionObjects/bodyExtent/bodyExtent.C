@@ -87,6 +87,12 @@ Foam::wordList Foam::functionObjects::bodyExtent::columns() const
 }
 
 
+Foam::wordList Foam::functionObjects::bodyExtent::units() const
+{
+    return wordList({"[m]", "[m]", "[m]", "[m]", "[m]"});
+}
+
+
 void Foam::functionObjects::bodyExtent::values(DynamicList<scalar>& row)
 {
     const scalarField& alpha = phases().alpha(phase_).primitiveField();

@@ -74,6 +74,16 @@ Foam::wordList Foam::functionObjects::bodyMotion::columns() const
 }
 
 
+Foam::wordList Foam::functionObjects::bodyMotion::units() const
+{
+    return wordList
+    ({
+        "[kg]", "[m/s]", "[m/s]", "[m/s]", "[-]",
+        "[kg]", "[m/s]", "[m/s]", "[m/s]"
+    });
+}
+
+
 void Foam::functionObjects::bodyMotion::values(DynamicList<scalar>& row)
 {
     const phaseSystem& phases = this->phases();

@@ -56,6 +56,19 @@ Foam::wordList Foam::functionObjects::energyBudget::columns() const
 }
 
 
+Foam::wordList Foam::functionObjects::energyBudget::units() const
+{
+    // Per phase four energies; then the mass and the energies
+    wordList u(4*phases().size() + 7, word("[J]"));
+    u[4*phases().size()] = "[kg]";
+    if (phases().sliding())
+    {
+        u.append(word("[J]"));
+    }
+    return u;
+}
+
+
 void Foam::functionObjects::energyBudget::values(DynamicList<scalar>& row)
 {
     const phaseSystem& phases = this->phases();

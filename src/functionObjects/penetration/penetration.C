@@ -40,6 +40,12 @@ Foam::wordList Foam::functionObjects::penetration::columns() const
 }
 
 
+Foam::wordList Foam::functionObjects::penetration::units() const
+{
+    return wordList({"[m]", "[m]", "[m/s]"});
+}
+
+
 void Foam::functionObjects::penetration::values(DynamicList<scalar>& row)
 {
     const lineSurface surface(surfaceOnLine());

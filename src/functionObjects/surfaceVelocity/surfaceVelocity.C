@@ -98,6 +98,12 @@ Foam::wordList Foam::functionObjects::surfaceVelocity::columns() const
 }
 
 
+Foam::wordList Foam::functionObjects::surfaceVelocity::units() const
+{
+    return wordList({"[m]", "[m/s]", "[m/s]", "[m/s]", "[m/s]"});
+}
+
+
 Foam::functionObjects::surfaceVelocity::lineSurface
 Foam::functionObjects::surfaceVelocity::surfaceOnLine() const
 {

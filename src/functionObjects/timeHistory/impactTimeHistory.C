@@ -1,5 +1,8 @@
 #include "impactTimeHistory.H"
 #include "keywordCheck.H"
+#include "IFstream.H"
+#include "IStringStream.H"
+#include "OSspecific.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -11,12 +14,12 @@ Foam::functionObjects::impactTimeHistory::impactTimeHistory
 )
 :
     fvMeshFunctionObject(name, runTime, dict),
-    writeFile(mesh_, name, name, true),
     lastIndex_(-1),
+    writePrecision_(15),
+    writtenHeader_(false),
     dict_(dict)
 {
     impactTimeHistory::read(dict);
-    resetFile(name);
 
     // Tell the solver that this function object does not read the output
     // mixture fields (without impactFoam, ledger() stops at first use)
@@ -70,12 +73,149 @@ void Foam::functionObjects::impactTimeHistory::start()
         "type", "libs", "enabled", "log", "timeStart", "timeEnd",
         "executeControl", "executeInterval", "writeControl",
         "writeInterval", "outputControl", "outputInterval", "region",
-        "writePrecision", "writeToFile", "useUserTime", "updateHeader"
+        "writePrecision"
     });
     valid.append(keywords());
     checkKeywords(dict_, valid, "Function object " + name());
 
+    openFile();
     write();
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::string Foam::functionObjects::impactTimeHistory::header() const
+{
+    // The names, then the units
+    string h("# Time");
+    for (const word& c : columns())
+    {
+        h += "\t" + c;
+    }
+    h += "\n# [s]";
+    for (const word& u : units())
+    {
+        h += "\t" + u;
+    }
+    return h;
+}
+
+
+void Foam::functionObjects::impactTimeHistory::openFile()
+{
+    // (the master decides for all: write() is collective)
+    bool startWritten = Pstream::master() && openTable();
+    Pstream::scatter(startWritten);
+    if (startWritten)
+    {
+        lastIndex_ = time_.timeIndex();
+    }
+}
+
+
+bool Foam::functionObjects::impactTimeHistory::openTable()
+{
+    const fileName base
+    (
+        time_.globalPath()/functionObject::outputPrefix/name()
+    );
+    const fileName table(name() + ".dat");
+    const scalar t0 = time_.value();
+
+    // The table of the earliest start of this case at or before t0
+    fileName earlier;
+    scalar tEarlier = GREAT;
+    for (const fileName& d : readDir(base, fileName::DIRECTORY))
+    {
+        scalar t = 0;
+        if
+        (
+            readScalar(d, t) && t < tEarlier
+         && t <= t0 + 1e-12*max(mag(t0), SMALL) && isFile(base/d/table)
+        )
+        {
+            earlier = base/d/table;
+            tEarlier = t;
+        }
+    }
+
+    if (!earlier.empty())
+    {
+        // Its rows before t0, if its header is this one's: the rows from
+        // t0 on are written again by this run
+        DynamicList<string> keep;
+        bool sameHeader = false;
+        bool startWritten = false;
+        {
+            IFstream is(earlier);
+            string line, head;
+            while (is.good() && !is.getLine(line).bad() && is.good())
+            {
+                if (line.empty())
+                {
+                    continue;
+                }
+                if (line[0] == '#')
+                {
+                    head += (head.empty() ? "" : "\n") + line;
+                    continue;
+                }
+                if (head != header())
+                {
+                    break;
+                }
+                IStringStream ls(line);
+                scalar t = 0;
+                ls >> t;
+                const scalar tol = 1e-12*max(mag(t0), SMALL);
+                if (t < t0 + tol)
+                {
+                    keep.append(line);
+                    startWritten = t > t0 - tol;
+                }
+            }
+            sameHeader = head == header();
+            if (!sameHeader)
+            {
+                keep.clear();
+                startWritten = false;
+            }
+        }
+        {
+            OFstream os(earlier);
+            if (sameHeader)
+            {
+                os  << header().c_str() << nl;
+            }
+            for (const string& line : keep)
+            {
+                os  << line.c_str() << nl;
+            }
+        }
+        file_.reset
+        (
+            new OFstream
+            (
+                earlier,
+                IOstream::ASCII,
+                IOstream::currentVersion,
+                IOstream::UNCOMPRESSED,
+                true
+            )
+        );
+        writtenHeader_ = sameHeader;
+
+        // The row of the start time, written by the run that wrote that
+        // time, stays: it holds that run's last step (this one's start has
+        // no step yet: no force)
+        return startWritten;
+    }
+
+    mkDir(base/time_.timeName());
+    file_.reset(new OFstream(base/time_.timeName()/table));
+    writtenHeader_ = false;
+    return false;
 }
 
 
@@ -84,7 +224,6 @@ void Foam::functionObjects::impactTimeHistory::start()
 bool Foam::functionObjects::impactTimeHistory::read(const dictionary& dict)
 {
     fvMeshFunctionObject::read(dict);
-    writeFile::read(dict);
     writePrecision_ = dict.getOrDefault<label>("writePrecision", 15);
     return true;
 }
@@ -107,17 +246,15 @@ bool Foam::functionObjects::impactTimeHistory::write()
     DynamicList<scalar> row;
     values(row);
 
-    OFstream& os = file();
+    if (!file_.valid())
+    {
+        return true;
+    }
+    OFstream& os = file_();
     os.precision(writePrecision_);
     if (!writtenHeader_)
     {
-        os.width(0);
-        os  << "# Time";
-        for (const word& c : columns())
-        {
-            os  << tab << c;
-        }
-        os  << endl;
+        os  << header().c_str() << nl;
         writtenHeader_ = true;
     }
     os  << time_.value();

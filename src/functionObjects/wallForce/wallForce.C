@@ -89,6 +89,20 @@ Foam::wordList Foam::functionObjects::wallForce::columns() const
 }
 
 
+Foam::wordList Foam::functionObjects::wallForce::units() const
+{
+    DynamicList<word> u;
+    forAll(patches_, i)
+    {
+        for (const char* q : {"[N]", "[N]", "[N]", "[Ns]", "[Ns]", "[Ns]"})
+        {
+            u.append(word(q));
+        }
+    }
+    return wordList(u);
+}
+
+
 void Foam::functionObjects::wallForce::values(DynamicList<scalar>& row)
 {
     const stepLedger& ledger = this->ledger();

@@ -44,6 +44,15 @@ const dictionary& subDict
 }
 
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::wordList Foam::impactProblem::keywords
+({
+    "geometry", "domain", "ambient", "bodies", "phaseProperties",
+    "contacts", "outputs"
+});
+
+
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
 void Foam::impactProblem::readDomain()
@@ -338,15 +347,7 @@ Foam::impactProblem::impactProblem
     cellSize_(0),
     interval_(0)
 {
-    checkKeywords
-    (
-        dict_,
-        {
-            "geometry", "domain", "ambient", "bodies", "phaseProperties",
-            "contacts", "outputs"
-        },
-        "impactDict"
-    );
+    checkKeywords(dict_, keywords, "impactDict");
     readDomain();
     readAmbient();
     readBodies();
