@@ -59,13 +59,19 @@ Foam::scalar Foam::interfacePressure::relaxedVolume
     // one it brings back over several steps) is not compressed to it. At
     // or below the lowest pressure of its path (where v grows without
     // bound) it is at the cap
+    //
+    // The phase's own path, unless it needs a payer it has not got (then
+    // the constant-pressure one); constantPressure's v is eos.vRelaxed
+    const pressureRelaxationPath& path = phases_.relaxationPath(k);
     const scalar rho = 1/cell.v[k];
     const scalar vMax = max(cell.vMax[k], cell.v[k]);
     const bool capped = vMax < VGREAT && cell.pLowest[k] < 0;
     const scalar v =
         capped && !(pStar > cell.pLowest[k])
       ? VGREAT
-      : eos.vRelaxed(pStar, rho, cell.e[k], dvdp);
+      : path.needsPayer()
+      ? eos.vRelaxed(pStar, rho, cell.e[k], dvdp)
+      : path.v(pStar, rho, cell.e[k], dvdp);
     if (capped && pStar < 0 && v > vMax)
     {
         scalar dv0;
@@ -217,6 +223,8 @@ bool Foam::interfacePressure::relax
         }
         else
         {
+            // (a path that needs no payer ends at the constant-pressure
+            // energy: pressureRelaxationPath::needsPayer)
             cell.e[k] = eConstantP;
         }
         if (phases_.phase(k).solid())
