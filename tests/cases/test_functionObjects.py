@@ -80,7 +80,6 @@ along +x:
                               alpha.copper and U (the last fall of alpha
                               through 1/2 along x) to 1e-12
 """
-import math
 import os
 import re
 import shutil
@@ -170,16 +169,6 @@ PROBES = [(1.1e-3, 1.1e-3), (5.1e-3, 2.1e-3), (20.1e-3, 5.3e-3)]
 PROBED = ["alpha.copper", "rho.copper", "p.copper", "p", "U", "sigmaEq"]
 
 
-def read_dat(case, name):
-    """The table of function object name: (column names, rows)"""
-    path = os.path.join(case, "postProcessing", name, "0", name + ".dat")
-    with open(path) as f:
-        header = f.readline().split()
-    if header[:2] != ["#", "Time"]:
-        raise fc.FoamError("%s: header %s" % (path, header))
-    return ["Time"] + header[2:], np.atleast_2d(np.loadtxt(path))
-
-
 def column(table, name):
     names, rows = table
     return rows[:, names.index(name)]
@@ -239,19 +228,6 @@ def momentum(case, m, time_name, phases):
     return P
 
 
-def wedge_to_full(m):
-    """2 pi over the sine of the wedge angle (a flat-faced wedge cell of
-    angle theta holds sin(theta)/(2 pi) of its ring), the angle from the
-    two wedge patches' normals"""
-    normals = []
-    for name, kind, start, size in m.patches:
-        if kind == "wedge":
-            n = m.Sf[start]
-            normals.append(n / np.linalg.norm(n))
-    angle = math.acos(min(1.0, max(-1.0, -float(np.dot(*normals)))))
-    return 2 * math.pi / math.sin(angle)
-
-
 def taylor_case(name, parallel=False):
     case = fc.copy_tutorial("taylorBar", name)
     prepare(case, FUNCTIONS_A)
@@ -269,7 +245,7 @@ def taylor_case(name, parallel=False):
 
 
 def check_energy(case, name="fo_energyBudget"):
-    energy = read_dat(case, "energy")
+    energy = fc.read_history(case, "energy")
     totals = log_totals(case)
     times = [t for t, _ in fc.time_dirs(case)]
     if len(totals) != len(times):
@@ -309,7 +285,7 @@ def check_energy(case, name="fo_energyBudget"):
                  % (dev, len(parts), perPhase,
                     column(energy, "plasticWork.copper")[-1]))
 
-    every10 = read_dat(case, "energy10")
+    every10 = fc.read_history(case, "energy10")
     worst10 = 0.0
     for r in every10[1]:
         full = row_at(energy, r[0])
@@ -326,7 +302,7 @@ def check_energy(case, name="fo_energyBudget"):
 
 def check_wall_force(case, name="fo_wallForce"):
     m = mg.read_polymesh(case)
-    toFull = wedge_to_full(m)
+    toFull = mg.wedge_to_full(m)
     # From the first write after the start: the fields at 0 are the
     # setFields input, which the solver floors (alphaMin) before the first
     # step
@@ -335,7 +311,7 @@ def check_wall_force(case, name="fo_wallForce"):
     P1 = momentum(case, m, times[-1][1], ["copper", "air"])
     dPx = toFull * (P1[0] - P0[0])
     barP = toFull * abs(P0[0])
-    force = read_dat(case, "wallForce")
+    force = fc.read_history(case, "wallForce")
     first = row_at(force, times[1][0])
     last = row_at(force, times[-1][0])
     patches = ["xMin", "xMax", "yMax", "axis"]
@@ -368,7 +344,7 @@ def check_wall_force(case, name="fo_wallForce"):
 def check_extent(case):
     rp = os.path.join(case, "postProcessing", "rodProfile", "copper.csv")
     tab = np.genfromtxt(rp, delimiter=",", names=True)
-    extent = read_dat(case, "rod")
+    extent = fc.read_history(case, "rod")
     m = mg.read_polymesh(case)
     worst = 0.0
     worstPen = 0.0
@@ -421,11 +397,11 @@ def check_parallel(serial, serialLast, barP):
         checks.note(str(e))
         return
     t = fc.time_dirs(serial)[-1][0]
-    es = row_at(read_dat(serial, "energy"), t)
-    ep = row_at(read_dat(case, "energy"), t)
-    fp = row_at(read_dat(case, "wallForce"), t)
-    xs = row_at(read_dat(serial, "rod"), t)
-    xp = row_at(read_dat(case, "rod"), t)
+    es = row_at(fc.read_history(serial, "energy"), t)
+    ep = row_at(fc.read_history(case, "energy"), t)
+    fp = row_at(fc.read_history(case, "wallForce"), t)
+    xs = row_at(fc.read_history(serial, "rod"), t)
+    xp = row_at(fc.read_history(case, "rod"), t)
     dE = abs(ep["total"] / es["total"] - 1)
     dI = max(abs(fp[p + ".Ix"] - serialLast[p + ".Ix"])
              for p in ("xMin", "xMax", "yMax", "axis")) / barP
@@ -511,7 +487,7 @@ def check_unpaid():
         f.write("U (-2000 0 0);\n")
     fc.run(case, ["impactSetup"])
     fc.run(case, ["impactFoam", "-endTime", str(END_C)])
-    energy = read_dat(case, "energy")
+    energy = fc.read_history(case, "energy")
     totals = log_totals(case)
     times = [t for t, _ in fc.time_dirs(case)]
     worst = worstUnpaid = 0.0
@@ -585,8 +561,8 @@ def check_rejected_steps():
     rejected = len(re.findall(r"Step rejected", text))
     stopped = "The last good fields were written" in text
     accepted = attempts - rejected - (1 if stopped else 0)
-    force = read_dat(case, "force")
-    energy = read_dat(case, "energy")
+    force = fc.read_history(case, "force")
+    energy = fc.read_history(case, "energy")
     t = column(force, "Time")
     unique = bool(np.all(np.diff(t) > 0))
     unpaidLog = sum(float(e) for e in re.findall(
@@ -627,7 +603,7 @@ def check_surface_velocity():
     fc.set_entry(case, "system/controlDict", "writePrecision", "17")
     fc.run(case, ["./Allrun", "-h", "0.025", "-end", str(END_B)],
            log="log.Allrun")
-    table = read_dat(case, "freeSurface")
+    table = fc.read_history(case, "freeSurface")
     x = fc.cell_centres(case)[:, 0]
     worstX = worstU = 0.0
     n = 0

@@ -103,29 +103,12 @@ def user_dict(text):
     return text[:i] + OUTPUTS + "\n" + text[i:]
 
 
-def read_table(case, name):
-    path = os.path.join(case, "postProcessing", name, "0", name + ".dat")
-    with open(path) as f:
-        header = f.readline().split()
-    if header[:2] != ["#", "Time"]:
-        raise fc.FoamError("%s: header %s" % (path, header))
-    return ["Time"] + header[2:], np.atleast_2d(np.loadtxt(path))
-
-
 def row_at(table, t):
     names, rows = table
     i = int(np.argmin(np.abs(rows[:, 0] - t)))
     if abs(rows[i, 0] - t) > 1e-9 * max(t, 1e-6):
         raise fc.FoamError("no row at t = %g (nearest %g)" % (t, rows[i, 0]))
     return dict(zip(names, rows[i]))
-
-
-def wedge_to_full(m):
-    """2 pi/sin(theta) for the wedge angle theta (numerics.md 10.3)"""
-    normals = [m.Sf[start] / np.linalg.norm(m.Sf[start])
-               for name, kind, start, size in m.patches if kind == "wedge"]
-    angle = math.acos(min(1.0, max(-1.0, -float(np.dot(*normals)))))
-    return 2 * math.pi / math.sin(angle)
 
 
 def fragments(m, inside):
@@ -189,9 +172,9 @@ def check_user_case():
                  % (present, names, marked))
 
     m = mg.read_polymesh(case)
-    toFull = wedge_to_full(m)
-    depth = read_table(case, "depth")
-    residual = read_table(case, "residual")
+    toFull = mg.wedge_to_full(m)
+    depth = fc.read_history(case, "depth")
+    residual = fc.read_history(case, "residual")
     times = ["0", "1e-06", "2e-06"]
 
     # Penetration: minus the gap at the start, the fields' at the writes
@@ -252,7 +235,7 @@ def check_user_case():
                  % (worst, start["mass"], mExact, start["fragmentUx"]))
 
     # The wall's force before the wave reaches it
-    support = read_table(case, "support")
+    support = fc.read_history(case, "support")
     names, rows = support
     Fx = rows[1, names.index("xMin.Fx")]
     exact = P0 * math.pi * R_DOMAIN**2

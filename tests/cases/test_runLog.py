@@ -39,7 +39,6 @@ Checks
                     negative progressInterval
 About 30 s.
 """
-import math
 import os
 import re
 import shutil
@@ -74,13 +73,6 @@ def new_case(name, control=None):
     return case
 
 
-def wedge_to_full(m):
-    normals = [m.Sf[start] / np.linalg.norm(m.Sf[start])
-               for name, kind, start, size in m.patches if kind == "wedge"]
-    angle = math.acos(min(1.0, max(-1.0, -float(np.dot(*normals)))))
-    return 2 * math.pi / math.sin(angle)
-
-
 def check_run():
     case = new_case("progress", "progressInterval 1e-9;")
     log = fc.run(case, ["impactFoam", "-endTime", "%g" % END])
@@ -103,7 +95,7 @@ def check_run():
 
     # The summary against the fields at the end
     m = mg.read_polymesh(case)
-    toFull = wedge_to_full(m)
+    toFull = mg.wedge_to_full(m)
     t = fc.latest_time(case)
     U = fc.read_field(case, t, "U")
     block = text[text.index("Summary at"):]

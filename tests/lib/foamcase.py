@@ -499,6 +499,18 @@ def has_field(case, time, name):
     return os.path.isfile(path) or os.path.isfile(path + ".gz")
 
 
+def read_history(case, name):
+    """The table of impactFoam's time history name,
+    postProcessing/<name>/0/<name>.dat: (column names from its first
+    header line, rows)"""
+    path = os.path.join(case, "postProcessing", name, "0", name + ".dat")
+    with open(path) as f:
+        header = f.readline().split()
+    if header[:2] != ["#", "Time"]:
+        raise FoamError("%s: header %s" % (path, header))
+    return ["Time"] + header[2:], np.atleast_2d(np.loadtxt(path))
+
+
 def cell_centres(case, time="0"):
     """Cell centres (N, 3): runs postProcess -func writeCellCentres -time t
     (once; the result C is kept in the time directory) and reads C."""

@@ -10,6 +10,7 @@ about the mean of the face centres), so that no postProcess run is needed.
     m.patches            # [(name, type, start, nFaces)]
     mg.stable_step(m, speed)   # min over cells of 2 V / sum_f |S_f| speed
 """
+import math
 import os
 import re
 
@@ -134,3 +135,13 @@ def stable_step(m, speed):
             continue
         np.add.at(total, m.owner[start:start + n], lam[start:start + n])
     return float(np.min(2 * m.V / total))
+
+
+def wedge_to_full(m):
+    """2 pi over the sine of the wedge angle theta, from the two wedge
+    patches' normals: a flat-faced wedge cell of angle theta holds
+    sin(theta)/(2 pi) of its ring (numerics.md 10.3)"""
+    normals = [m.Sf[start] / np.linalg.norm(m.Sf[start])
+               for name, kind, start, size in m.patches if kind == "wedge"]
+    angle = math.acos(min(1.0, max(-1.0, -float(np.dot(*normals)))))
+    return 2 * math.pi / math.sin(angle)

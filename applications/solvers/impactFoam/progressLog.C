@@ -145,7 +145,8 @@ void Foam::progressLog::summary(const scalar unpaid) const
             << " kg, momentum " << p << " kg m/s, mean velocity "
             << (m > 0 ? p/m : vector::zero) << " m/s" << nl;
     }
-    os  << "    energy added without a payer " << factor*unpaid << " J";
+    // (not the totals line's wording, which scripts read: stepReport)
+    os  << "    unpaid energy " << factor*unpaid << " J";
     if (kinetic0_ > 0)
     {
         os  << " (" << unpaid/kinetic0_ << " of the initial kinetic energy)";
