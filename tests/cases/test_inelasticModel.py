@@ -18,7 +18,9 @@ Checks:
     mass written (the fields every 7.5 us), to 1e-12 of T M;
   - serial = parallel: age.copper to 1e-10 of its largest value where
     copper is not a trace (the variable crosses processor faces in the
-    exchanged face states);
+    exchanged face states); its written values on processor0's processor
+    patch are those of processor1's cells beside it (1e-12), not the
+    decomposition's;
   - restart = run: stopped at 22.5 us and restarted from the written
     fields, age.copper at the end within 1e-12 of its largest value of the
     straight run (the state, age included, is in the 17-digit fields);
@@ -142,6 +144,15 @@ def main():
     checks.check("inelastic_age_serial_parallel", dp <= 1e-10,
                  "max |serial - parallel| age.copper %.2e of its largest "
                  "value (bound 1e-10)" % dp)
+
+    # The written boundary values of a carried variable are current: on a
+    # processor patch, the cells on the other side
+    diff, big = mg.processor_patch_difference(
+        parallel, fc.latest_time(parallel), "age.copper")
+    checks.check("inelastic_age_processorPatch", diff <= 1e-12 * big,
+                 "age.copper written on processor0's processor patch at the "
+                 "end against processor1's cells beside it: largest "
+                 "difference %.2e of %.3e (bound 1e-12 of it)" % (diff, big))
 
     dr = np.max(np.abs(rd(legs, fc.latest_time(legs), "age.copper")
                        - age)) / scale

@@ -145,3 +145,32 @@ def wedge_to_full(m):
                for name, kind, start, size in m.patches if kind == "wedge"]
     angle = math.acos(min(1.0, max(-1.0, -float(np.dot(*normals)))))
     return 2 * math.pi / math.sin(angle)
+
+
+def patch_values(path, patch):
+    """The value list of patch in a volScalarField file"""
+    with open(path) as f:
+        text = f.read()
+    i = text.index(patch, text.index("boundaryField"))
+    m = re.search(r"value\s+(uniform\s+(\S+);|nonuniform\s+List<scalar>"
+                  r"\s*(\d+)\s*\(([^)]*)\))", text[i:])
+    if m.group(2) is not None:
+        return np.array([float(m.group(2))])
+    return np.array(m.group(4).split(), dtype=float)
+
+
+def processor_patch_difference(case, time, field):
+    """The largest difference between a decomposed case's written field on
+    processor0's patch to processor1 and processor1's cells beside it (the
+    faces of the two processor patches are in the same order), and the
+    largest of those cells' values"""
+    p0 = os.path.join(case, "processor0")
+    p1 = os.path.join(case, "processor1")
+    m1 = read_polymesh(p1)
+    start, size = next((s, n) for name, kind, s, n in m1.patches
+                       if name == "procBoundary1to0")
+    inner = fc.read_field(p1, time, field)[m1.owner[start:start + size]]
+    values = patch_values(os.path.join(p0, time, field), "procBoundary0to1")
+    if values.size not in (1, inner.size):
+        return float("inf"), float(np.abs(inner).max())
+    return float(np.abs(values - inner).max()), float(np.abs(inner).max())

@@ -153,19 +153,15 @@ void Foam::progressLog::summary(const scalar unpaid) const
     }
     os  << nl;
 
-    // Where the results are
-    const fileName& path = runTime_.path();
-    const fileName root
-    (
-        Pstream::parRun() ? runTime_.globalPath() : path
-    );
+    // Where the results are (the case's directory, also in parallel)
+    const fileName root(runTime_.globalPath());
+    const fileName histories(root/"postProcessing");
     os  << "    fields: the time directories of " << root.c_str()
         << (Pstream::parRun() ? " (processor*; reconstructPar)" : "");
-    if (isDir(root/"postProcessing"))
+    if (isDir(histories))
     {
-        os  << nl << "    time histories: " << (root/"postProcessing").c_str()
-            << " (";
-        const fileNameList dirs(readDir(root/"postProcessing", fileName::DIRECTORY));
+        os  << nl << "    time histories: " << histories.c_str() << " (";
+        const fileNameList dirs(readDir(histories, fileName::DIRECTORY));
         forAll(dirs, i)
         {
             os  << (i ? " " : "") << dirs[i].c_str();

@@ -106,7 +106,10 @@ int main(int argc, char *argv[])
             while (pos != string::npos)
             {
                 const auto end = pos + use.size();
-                if (end == text.size() || !(isalnum(text[end]) || text[end] == '_'))
+                const bool whole =
+                    end == text.size()
+                 || !(isalnum(text[end]) || text[end] == '_');
+                if (whole)
                 {
                     impactDict.remove(key);
                     break;

@@ -303,6 +303,15 @@ void Foam::phaseModel::correctBoundaryConditions()
 }
 
 
+void Foam::phaseModel::correctCarriedBoundaries()
+{
+    for (volScalarField& field : carried_)
+    {
+        correctBoundaryConditionsInPlace(field);
+    }
+}
+
+
 void Foam::phaseModel::saveState()
 {
     alphaSave_ = alpha_.primitiveField();

@@ -352,6 +352,11 @@ void Foam::phaseSystem::correctDensity()
 
 void Foam::phaseSystem::correctOutputs()
 {
+    for (phaseModel& phase : phases_)
+    {
+        phase.correctCarriedBoundaries();
+    }
+
     scalarField& pM = pMixture_.primitiveFieldRef();
     symmTensorField& sigma = sigma_.primitiveFieldRef();
 

@@ -326,7 +326,10 @@ Foam::dictionary Foam::impactProblem::penetrationOutput
     dir /= mag(dir);
     point start(lineStart(b, dir));
 
-    dictionary fo(functionObjectDict("penetration", "impactFoamFunctionObjects"));
+    dictionary fo
+    (
+        functionObjectDict("penetration", "impactFoamFunctionObjects")
+    );
     fo.add("phase", b.phase);
     if (d.found("point", keyType::LITERAL))
     {
