@@ -42,18 +42,9 @@ Foam::stepLedger::stepLedger(const phaseSystem& phases)
 
 void Foam::stepLedger::readRestart()
 {
+    // (at construction this object's own path is the start time's)
     const fvMesh& mesh = phases_.mesh();
-    IOobject io
-    (
-        typeName,
-        mesh.time().timeName(),
-        "uniform",
-        mesh,
-        IOobject::MUST_READ,
-        IOobject::NO_WRITE,
-        false
-    );
-    const fileName file(io.objectPath());
+    const fileName file(objectPath());
     if (!isFile(file))
     {
         return;

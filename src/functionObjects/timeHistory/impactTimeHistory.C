@@ -122,6 +122,7 @@ bool Foam::functionObjects::impactTimeHistory::openTable()
     );
     const fileName table(name() + ".dat");
     const scalar t0 = time_.value();
+    const scalar tol = 1e-12*max(mag(t0), SMALL);
 
     // The table of the earliest start of this case at or before t0
     fileName earlier;
@@ -132,7 +133,7 @@ bool Foam::functionObjects::impactTimeHistory::openTable()
         if
         (
             readScalar(d, t) && t < tEarlier
-         && t <= t0 + 1e-12*max(mag(t0), SMALL) && isFile(base/d/table)
+         && t <= t0 + tol && isFile(base/d/table)
         )
         {
             earlier = base/d/table;
@@ -142,8 +143,9 @@ bool Foam::functionObjects::impactTimeHistory::openTable()
 
     if (!earlier.empty())
     {
-        // Its rows before t0, if its header is this one's: the rows from
-        // t0 on are written again by this run
+        // Its rows up to t0, if its header is this one's: the rows after
+        // t0 are written again by this run
+        const string h(header());
         DynamicList<string> keep;
         bool sameHeader = false;
         bool startWritten = false;
@@ -161,21 +163,20 @@ bool Foam::functionObjects::impactTimeHistory::openTable()
                     head += (head.empty() ? "" : "\n") + line;
                     continue;
                 }
-                if (head != header())
+                if (head != h)
                 {
                     break;
                 }
                 IStringStream ls(line);
                 scalar t = 0;
                 ls >> t;
-                const scalar tol = 1e-12*max(mag(t0), SMALL);
                 if (t < t0 + tol)
                 {
                     keep.append(line);
                     startWritten = t > t0 - tol;
                 }
             }
-            sameHeader = head == header();
+            sameHeader = head == h;
             if (!sameHeader)
             {
                 keep.clear();
@@ -186,7 +187,7 @@ bool Foam::functionObjects::impactTimeHistory::openTable()
             OFstream os(earlier);
             if (sameHeader)
             {
-                os  << header().c_str() << nl;
+                os  << h.c_str() << nl;
             }
             for (const string& line : keep)
             {
