@@ -17,6 +17,10 @@ Checks
                     drawn are the mesh's: every cell in
                     2-D (once each side of the axis on the wedge), one layer
                     of the 3-D mesh cut by the plane z = 0 (35 x 20 cells)
+  impactPlot_line  a 1-D case (waterAirShockTube): drawn as lines along x,
+                    the colour at mid-height over cells a phase fills is
+                    that phase's, the p curve passes within a pixel of ten
+                    cells' (x, p)
   impactPlot_blend  a cell's colour is its phases' colours weighted by the
                     fractions (a half rod, half air cell: the mean)
   impactPlot_binary  the axisymmetric case written with writeFormat binary
@@ -279,9 +283,61 @@ def check_errors(case):
                      "exit %d: %s" % (code, " ".join(out.split())[:200]))
 
 
+def check_line():
+    """A 1-D case (one cell across in y and z): the stacked fractions and
+    the field along x"""
+    case = fc.copy_tutorial("waterAirShockTube", run_dir=RUN)
+    fc.run(case, ["./Allrun"], log="log.Allrun")
+    code, out = run_plot(case, ["-latestTime", "-field", "p"])
+    time = fc.time_dirs(case)[-1][1]
+    ok = code == 0 and ("p_%s.png" % time) in out
+    phases = plot.phases_of(case)
+    parts = [plot.Part(case, (np.zeros(3), np.array([0, 0, 1.0])))]
+    png = os.path.join(RUN, "line.png")
+    to_pixel = plot.draw(parts, case, time, phases, "p", png, 120)
+    part = parts[0]
+    x = part.centres[:, 0]
+    alpha = [plot.read_field(os.path.join(case, time, "alpha." + ph),
+                             part.nCells)[part.cells] for ph in phases]
+    p = plot.read_field(os.path.join(case, time, "p"),
+                        part.nCells)[part.cells]
+    colours = plot.phase_colours(len(phases))
+    colours[-1] = plot.hex_to_rgb(plot.AMBIENT_LINE)
+    # The colour at mid-height over cells a phase fills (to 1e-3): its own
+    worst, n = 0.0, 0
+    for k in range(len(phases)):
+        full = np.nonzero(alpha[k] > 0.999)[0]
+        for c in full[len(full) // 4::max(len(full) // 4, 1)][:3]:
+            diff = np.abs(pixel(png, to_pixel(x[c], 0.5)) -
+                          colours[k] * 255).max()
+            worst = max(worst, diff)
+            n += 1
+    # The field's curve passes through each cell's (x, p): a dark pixel
+    # within one pixel of it, at ten cells
+    from PIL import Image
+    image = np.array(Image.open(png).convert("L"), dtype=float)
+    misses = 0
+    for c in np.linspace(0, len(x) - 1, 10).astype(int):
+        col, row = to_pixel(x[c], p[c], panel=1)
+        if image[row - 1:row + 2, col - 1:col + 2].min() > 100:
+            misses += 1
+    ok = ok and n >= 2 * len(phases) - 1 and worst <= 2 and misses == 0 \
+        and part.geometry == "line" and len(part.cells) == part.nCells
+    checks.check("impactPlot_line", ok,
+                 "waterAirShockTube (%d cells, one across): exit %d, drawn "
+                 "as %s; colour at mid-height over %d cells a phase fills "
+                 "off its colour by %.0f of 255 (bound 2); the p curve "
+                 "misses %d of 10 cells' (x, p)"
+                 % (part.nCells, code, part.geometry, n, worst, misses))
+
+
 def main():
     fc.require_apps("impactSetup", "impactFoam", "blockMesh")
     check_blend()
+    try:
+        check_line()
+    except (fc.FoamError, plot.PlotError) as e:
+        checks.fail("impactPlot_line", getattr(e, "summary", None) or str(e))
     cases = {}
     for geometry in ("axisymmetric", "planar", "threeD"):
         try:
