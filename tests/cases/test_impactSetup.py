@@ -822,10 +822,16 @@ def check_variables():
     path = os.path.join(case, "system", "impactDict")
     with open(path) as f:
         text = f.read()
-    text = text.replace("geometry    axisymmetric;",
-                        "rodU        (-1800 0 0);    // $rodU in a comment\n"
-                        "geometry    axisymmetric;", 1)
-    text = text.replace("U           (-1500 0 0);", "U           $rodU;", 1)
+    # (the template's own variable, speed, replaced by rodU)
+    for old, new in (
+            ("speed       1500;", "rodU        (-1800 0 0);"
+             "    // $rodU in a comment"),
+            ("U           (#eval{ -$speed } 0 0);", "U           $rodU;")):
+        if old not in text:
+            checks.fail("impactSetup_variables",
+                        "the template's impactDict has no %s" % old)
+            return
+        text = text.replace(old, new, 1)
     with open(path, "w") as f:
         f.write(text)
     try:
