@@ -30,6 +30,8 @@ Checks
                     the ASCII files' 10 digits)
   impactPlot_field  -field sigmaEq: a picture at 1e-06; at 0, where the field
                     is not written, the materials alone and a note saying so
+  impactPlot_boundaryPlane  3-D, a plane on the mesh's boundary: the
+                    layer of cells above it (35 x 20)
   impactPlot_animate  -animate: a GIF with a frame per written time
   impactPlot_error_<what>  a time not written, a bad -plane, a case without
                     constant/phaseProperties: a message naming it, exit
@@ -331,6 +333,20 @@ def check_line():
                  % (part.nCells, code, part.geometry, n, worst, misses))
 
 
+def check_boundary_plane(case):
+    """3-D: a plane on the mesh's boundary (z = -20 mm, the domain's min)
+    draws the layer of cells above it"""
+    roots = plot.roots_of(case)
+    parts = plot.slice_parts(roots, (np.array([0, 0, -20e-3]),
+                                     np.array([0, 0, 1.0])))
+    drawn = sum(len(p.cells) for p in parts)
+    code, out = run_plot(case, ["-latestTime", "-plane",
+                                "0,0,-0.02,0,0,1"])
+    checks.check("impactPlot_boundaryPlane", code == 0 and drawn == 35 * 20,
+                 "the plane z = -20 mm (the mesh's boundary): exit %d, %d "
+                 "cells drawn (one layer: %d)" % (code, drawn, 35 * 20))
+
+
 def main():
     fc.require_apps("impactSetup", "impactFoam", "blockMesh")
     check_blend()
@@ -354,6 +370,8 @@ def main():
                         getattr(e, "summary", None) or str(e))
         check_field(case)
         check_animate(case)
+    if cases.get("threeD"):
+        check_boundary_plane(cases["threeD"])
         check_errors(case)
     checks.exit()
 
