@@ -37,6 +37,9 @@ Checks
                     earlier's volume where they overlap: the earlier's
                     volume is its own less the common part, the sum of the
                     fractions stays 1
+  impactSetup_error_material_<what>  an error in a case's material file
+                    (a missing and a misspelled keyword of its equation of
+                    state) names that file and lines that hold the error
   impactSetup_variables  a top-level entry used as $name (rodU, the rod's U)
                     is read into the body and dropped; impactSetup_error_
                     unusedVariable: an entry nobody uses stops as unknown
@@ -459,6 +462,48 @@ def check_errors():
         checks.check("impactSetup_error_" + name, fatal and not missing,
                      ("missing %s; " % missing if missing else "")
                      + " ".join(msg)[:300])
+
+
+def check_material_errors():
+    """An error in a case's material file names that file and the lines of
+    the entry at fault: a missing keyword of its equation of state, and a
+    misspelled one"""
+    lib = os.path.join(os.environ["IMPACTFOAM_DIR"], "etc", "materials",
+                       "steel4340")
+    with open(lib) as f:
+        steel = f.read()
+    for name, (old, new), expect in (
+            ("missing", (r"\bGamma0\b", "Gama0"),
+             ["needs the keyword Gamma0", "equationOfState"]),
+            ("keyword", (r"\bGamma0(\s+[^;]+;)", r"Gamma0\1 rhoo 1;"),
+             ["rhoo"])):
+        text, n = re.subn(old, new, steel, count=1)
+        if n != 1:
+            checks.fail("impactSetup_error_material_" + name,
+                        "test set-up: no %s in etc/materials/steel4340" % old)
+            continue
+        # The line of the change in the material file
+        marker = "Gama0" if name == "missing" else "rhoo"
+        line = text[:text.index(marker)].count("\n") + 1
+        case = new_case("error_material_" + name,
+                        BASE.replace("material steel4340;",
+                                     "material myPlate;"),
+                        materials={"myPlate": text})
+        log = run_setup(case, check=False)
+        fatal = log[log.find("FOAM FATAL"):] if "FOAM FATAL" in log else ""
+        m = re.search(r"(?:file|in file): (\S+?)(?:\.equationOfState)?"
+                      r"(?: at line (\d+)| from line (\d+) to line (\d+))",
+                      fatal)
+        ok = bool(fatal) and all(e in fatal for e in expect) and m \
+            and m.group(1).endswith("constant/materials/myPlate")
+        if ok:
+            lo = int(m.group(2) or m.group(3))
+            hi = int(m.group(2) or m.group(4))
+            ok = lo <= line <= hi + 1
+        checks.check("impactSetup_error_material_" + name, ok,
+                     "the change at line %d of constant/materials/myPlate: "
+                     "%s" % (line, " ".join(fatal.split("\n")[1:3])[:300]
+                             if fatal else "no FOAM FATAL"))
 
 
 def check_radial_velocity():
@@ -906,6 +951,7 @@ def main():
         checks.exit()
     os.makedirs(RUN, exist_ok=True)
     check_errors()
+    check_material_errors()
     check_warnings()
     check_cuts_and_gap()
     try:

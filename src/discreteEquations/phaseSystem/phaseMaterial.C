@@ -49,11 +49,13 @@ void Foam::phaseMaterial::mergeOnto(dictionary& base, const dictionary& top)
                 continue;
             }
         }
-        // Adding renames an entry after its new dictionary; a keyword keeps
-        // the name of the file it came from (checkKeywords names that file)
+        // Adding renames an entry after its new dictionary; an entry keeps
+        // the name of the file it came from, so that an error in it names
+        // that file and its lines (a sub-dictionary: <file>.<keyword>, as
+        // OpenFOAM names one)
         const fileName origin(e.name());
         entry* added = base.set(e.clone(base).ptr());
-        if (added && !added->isDict())
+        if (added)
         {
             added->name() = origin;
         }
