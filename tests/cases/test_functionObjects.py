@@ -182,9 +182,34 @@ def row_at(table, t):
     return dict(zip(names, rows[i]))
 
 
+def to_full(case, log="log.impactFoam"):
+    """The factor from the log's sums to energyBudget's: the wedge's to the
+    full body of revolution, which the log states on a wedge mesh (15
+    digits), else 1. It is the mesh's to 1e-10 (meshGeometry.wedge_to_full,
+    from one face of points written to 10 digits)."""
+    with open(os.path.join(case, log)) as f:
+        m = re.search(r"the full body of revolution, as in the time histories"
+                      r" and the summary, is (\S+) times them", f.read())
+    if not m:
+        return 1.0
+    factor = float(m.group(1))
+    mesh = mg.read_polymesh(case)
+    if abs(factor / mg.wedge_to_full(mesh) - 1) > 1e-10:
+        raise fc.FoamError("the log's wedge factor %.15g is not the mesh's "
+                           "%.15g" % (factor, mg.wedge_to_full(mesh)))
+    return factor
+
+
 def log_totals(case, log="log.impactFoam"):
     """(mass, energy, unpaid) of the log's totals lines, in order: the
-    initial one, then one per write time"""
+    initial one, then one per write time; the full body's on a wedge mesh
+    (the log prints the wedge's)"""
+    f = to_full(case)
+    return [(f * m, f * e, f * u) for m, e, u in log_totals_mesh(case, log)]
+
+
+def log_totals_mesh(case, log="log.impactFoam"):
+    """log_totals as the log prints them (the mesh's sums)"""
     out = []
     with open(os.path.join(case, log)) as f:
         for line in f:
@@ -565,7 +590,7 @@ def check_rejected_steps():
     energy = fc.read_history(case, "energy")
     t = column(force, "Time")
     unique = bool(np.all(np.diff(t) > 0))
-    unpaidLog = sum(float(e) for e in re.findall(
+    unpaidLog = to_full(case) * sum(float(e) for e in re.findall(
         r"(?:set without a payer|void cells).* energy added (\S+) J",
         text))
     unpaid = column(energy, "unpaid")[-1]

@@ -1,5 +1,6 @@
 #include "stepReport.H"
 #include "OStringStream.H"
+#include "wedgeRevolution.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -106,6 +107,15 @@ void Foam::stepReport::logTotals(const bool initial) const
     {
         os  << "Initial totals: mass " << totals.first() << " kg, energy "
             << totals.second() << " J";
+        vector axis;
+        const scalar toFull = wedgeToFull(phases_.mesh(), axis);
+        if (toFull > 0)
+        {
+            os  << nl << "    (this log's masses and energies are the "
+                << "wedge's; the full body of revolution, as in the time "
+                << "histories and the summary, is " << toFull
+                << " times them)";
+        }
     }
     else
     {

@@ -1,5 +1,6 @@
 #include "energyBudget.H"
 #include "foamEigen.H"
+#include "wedgeRevolution.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -23,8 +24,12 @@ Foam::functionObjects::energyBudget::energyBudget
     const dictionary& dict
 )
 :
-    impactTimeHistory(name, runTime, dict)
+    impactTimeHistory(name, runTime, dict),
+    toFull_(1)
 {
+    vector axis;
+    const scalar toFull = wedgeToFull(mesh_, axis);
+    toFull_ = toFull > 0 ? toFull : 1;
     start();
 }
 
@@ -105,28 +110,29 @@ void Foam::functionObjects::energyBudget::values(DynamicList<scalar>& row)
     Pstream::listCombineGather(sums, plusEqOp<scalar>());
     Pstream::listCombineScatter(sums);
 
+    // (the full body: every figure times toFull_)
     scalar total[4] = {0, 0, 0, 0};
     for (label k = 0; k < nPhases; ++k)
     {
         for (label i = 0; i < 4; ++i)
         {
-            row.append(sums[4*k + i]);
+            row.append(toFull_*sums[4*k + i]);
             total[i] += sums[4*k + i];
         }
     }
 
     // The mass and energy as the solver sums them (its totals line)
     const Pair<scalar> totals(phases.totals());
-    row.append(totals.first());
+    row.append(toFull_*totals.first());
     for (label i = 0; i < 4; ++i)
     {
-        row.append(total[i]);
+        row.append(toFull_*total[i]);
     }
-    row.append(totals.second());
-    row.append(ledger().unpaidEnergy());
+    row.append(toFull_*totals.second());
+    row.append(toFull_*ledger().unpaidEnergy());
     if (phases.sliding())
     {
-        row.append(ledger().frictionalHeat());
+        row.append(toFull_*ledger().frictionalHeat());
     }
 }
 
