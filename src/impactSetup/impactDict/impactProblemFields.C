@@ -221,34 +221,51 @@ void Foam::impactProblem::setFields(const fvMesh& mesh)
         return k < 0 ? ambient_.rho : bodies_[k].rho;
     };
 
-    for (const word& phase : phases_)
+    auto pOf = [&](const label k)
     {
-        const labelList m(members(phase));
-        scalarField alphaPhase(nCells, 0), rhoPhase(nCells, rhoOf(m[0]));
-        forAll(alphaPhase, celli)
-        {
-            scalar a = 0, mass = 0;
-            for (const label k : m)
-            {
-                a += fractionOf(k, celli);
-                mass += fractionOf(k, celli)*rhoOf(k);
-            }
-            alphaPhase[celli] = a;
-            if (a > 0)
-            {
-                rhoPhase[celli] = mass/a;
-            }
-        }
-        writeField(mesh, "alpha." + phase, dimless, alphaPhase);
-        writeField(mesh, "rho." + phase, dimDensity, rhoPhase);
-    }
+        return k < 0 ? ambient_.p : bodies_[k].p;
+    };
 
-    // U: momentum-weighted; p: volume-weighted (uniform where all agree)
+    // Pressures: one p where all bodies are at the ambient's; else each
+    // phase's own p.<phase> too (volume-weighted over its bodies), so that
+    // a cell holding bodies at different pressures starts with each at its
+    // own, not at their mean
     bool uniformP = true;
     for (const impactBody& b : bodies_)
     {
         uniformP = uniformP && b.p == ambient_.p;
     }
+
+    for (const word& phase : phases_)
+    {
+        const labelList m(members(phase));
+        scalarField alphaPhase(nCells, 0), rhoPhase(nCells, rhoOf(m[0]));
+        scalarField pPhase(nCells, pOf(m[0]));
+        forAll(alphaPhase, celli)
+        {
+            scalar a = 0, mass = 0, pa = 0;
+            for (const label k : m)
+            {
+                a += fractionOf(k, celli);
+                mass += fractionOf(k, celli)*rhoOf(k);
+                pa += fractionOf(k, celli)*pOf(k);
+            }
+            alphaPhase[celli] = a;
+            if (a > 0)
+            {
+                rhoPhase[celli] = mass/a;
+                pPhase[celli] = pa/a;
+            }
+        }
+        writeField(mesh, "alpha." + phase, dimless, alphaPhase);
+        writeField(mesh, "rho." + phase, dimDensity, rhoPhase);
+        if (!uniformP)
+        {
+            writeField(mesh, "p." + phase, dimPressure, pPhase);
+        }
+    }
+
+    // U: momentum-weighted; p: volume-weighted (uniform where all agree)
     vectorField U(nCells, Zero);
     scalarField p(nCells, ambient_.p);
     const vectorField& C = mesh.C().primitiveField();
