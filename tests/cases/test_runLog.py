@@ -33,6 +33,9 @@ Checks
                     within 1e-4 (the plastic work of the rod's trace cells
                     parts by 4e-5 of its tally after a restart, a
                     restart of minor phases that is not exact)
+  runLog_profiling  OpenFOAM's own controlDict entry profiling passes the
+                    strict check, and its table (uniform/profiling) times
+                    the function objects
   runLog_error_<what>  the run stops before its first step, naming the entry
                     and the nearest keyword: maxCO in the controlDict,
                     adjustTimeStep no, piont in a function object, a
@@ -261,9 +264,24 @@ def check_errors():
                                      [:240]))
 
 
+def check_profiling():
+    """OpenFOAM's own controlDict entries pass the strict check: profiling
+    runs, and its table times each function object"""
+    case = new_case("profiling", "profiling { active true; cpuInfo false; "
+                    "memInfo false; sysInfo false; }")
+    fc.run(case, ["impactFoam", "-endTime", "2e-7"])
+    path = os.path.join(case, fc.latest_time(case), "uniform", "profiling")
+    text = open(path).read() if os.path.isfile(path) else ""
+    timed = sorted(set(re.findall(r"functionObject::(\w+)::execute", text)))
+    checks.check("runLog_profiling", {"energy", "rodMotion"} <= set(timed),
+                 "controlDict's profiling accepted; %s times the function "
+                 "objects %s" % (os.path.relpath(path, case), timed))
+
+
 def main():
     fc.require_apps("impactSetup", "impactFoam", "blockMesh")
-    for step in (check_run, check_restart, check_terminal, check_errors):
+    for step in (check_run, check_restart, check_terminal, check_errors,
+                 check_profiling):
         try:
             step()
         except fc.FoamError as e:

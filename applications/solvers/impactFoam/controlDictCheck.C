@@ -16,6 +16,8 @@ void Foam::checkControlDict(const Time& runTime)
         "libs", "graphFormat", "cacheTemporaryObjects", "DebugSwitches",
         "InfoSwitches", "OptimisationSwitches", "DimensionedConstants",
         "DimensionSets", "fileModificationChecking", "fileHandler",
+        "profiling", "printExecutionFormat", "writeFrequency",
+        "writeVersion",
         // impactFoam's
         "maxCo", "maxDeltaT", "minDeltaTFactor", "debugDeltaT",
         "progressInterval"
