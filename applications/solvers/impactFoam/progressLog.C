@@ -42,20 +42,15 @@ Foam::progressLog::progressLog
 
 Foam::scalar Foam::progressLog::kineticEnergy() const
 {
-    const scalarField& V = phases_.mesh().V();
-    const vectorField& U = phases_.U().primitiveField();
     scalar K = 0;
     forAll(phases_, k)
     {
-        const scalarField& alpha = phases_.alpha(k).primitiveField();
-        const scalarField& rho = phases_.rho(k).primitiveField();
-        forAll(V, c)
-        {
-            K += 0.5*alpha[c]*rho[c]*V[c]
-               *magSqr(phases_[k].velocity(U[c], c));
-        }
+        scalar mass, kinetic;
+        vector momentum;
+        phases_.phaseMotion(k, mass, momentum, kinetic);
+        K += kinetic;
     }
-    return returnReduce(K, sumOp<scalar>());
+    return K;
 }
 
 
@@ -106,24 +101,14 @@ void Foam::progressLog::summary(const scalar unpaid) const
     const scalar toFull = wedgeToFull(mesh, axis);
     const scalar factor = toFull > 0 ? toFull : 1;
 
-    const scalarField& V = mesh.V();
-    const vectorField& U = phases_.U().primitiveField();
     const label n = phases_.size();
     List<scalar> mass(n, Zero);
     List<vector> momentum(n, Zero);
     forAll(phases_, k)
     {
-        const scalarField& alpha = phases_.alpha(k).primitiveField();
-        const scalarField& rho = phases_.rho(k).primitiveField();
-        forAll(V, c)
-        {
-            const scalar m = alpha[c]*rho[c]*V[c];
-            mass[k] += m;
-            momentum[k] += m*phases_[k].velocity(U[c], c);
-        }
+        scalar kinetic;
+        phases_.phaseMotion(k, mass[k], momentum[k], kinetic);
     }
-    Pstream::listCombineGather(mass, plusEqOp<scalar>());
-    Pstream::listCombineGather(momentum, plusEqOp<vector>());
 
     OStringStream os;
     os.precision(6);

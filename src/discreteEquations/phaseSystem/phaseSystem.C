@@ -447,6 +447,35 @@ Foam::Pair<Foam::scalar> Foam::phaseSystem::totals() const
 }
 
 
+void Foam::phaseSystem::phaseMotion
+(
+    const label k,
+    scalar& mass,
+    vector& momentum,
+    scalar& kinetic
+) const
+{
+    const scalarField& V = mesh_.V();
+    const vectorField& U = U_.primitiveField();
+    const scalarField& alpha = this->alpha(k).primitiveField();
+    const scalarField& rho = this->rho(k).primitiveField();
+    mass = 0;
+    momentum = Zero;
+    kinetic = 0;
+    forAll(V, c)
+    {
+        const scalar m = alpha[c]*rho[c]*V[c];
+        const vector u(phases_[k].velocity(U[c], c));
+        mass += m;
+        momentum += m*u;
+        kinetic += 0.5*m*magSqr(u);
+    }
+    reduce(mass, sumOp<scalar>());
+    reduce(momentum, sumOp<vector>());
+    reduce(kinetic, sumOp<scalar>());
+}
+
+
 void Foam::phaseSystem::restoreState()
 {
     for (phaseModel& phase : phases_)
