@@ -1,6 +1,7 @@
 #include "progressLog.H"
 #include "inputDefaults.H"
 #include "wedgeRevolution.H"
+#include "historySummary.H"
 #include "OStringStream.H"
 #include "OSspecific.H"
 
@@ -137,6 +138,23 @@ void Foam::progressLog::summary(const scalar unpaid) const
         os  << " (" << unpaid/kinetic0_ << " of the initial kinetic energy)";
     }
     os  << nl;
+
+    // The last row of each time history (penetration, residual velocity,
+    // impulse: the outputs of impactDict), by their historySummary
+    const functionObjectList& functions = runTime_.functionObjects();
+    forAll(functions, i)
+    {
+        const historySummary* history =
+            dynamic_cast<const historySummary*>(&functions[i]);
+        if (history)
+        {
+            const string line(history->summaryLine());
+            if (!line.empty())
+            {
+                os  << "    " << line.c_str() << nl;
+            }
+        }
+    }
 
     // Where the results are (the case's directory, also in parallel)
     const fileName root(runTime_.globalPath());

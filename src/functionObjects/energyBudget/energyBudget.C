@@ -74,6 +74,12 @@ Foam::wordList Foam::functionObjects::energyBudget::units() const
 }
 
 
+Foam::wordList Foam::functionObjects::energyBudget::summaryColumns() const
+{
+    return wordList({"kinetic", "plasticWork", "total", "unpaid"});
+}
+
+
 void Foam::functionObjects::energyBudget::values(DynamicList<scalar>& row)
 {
     const phaseSystem& phases = this->phases();

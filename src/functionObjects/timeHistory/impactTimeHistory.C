@@ -1,4 +1,5 @@
 #include "impactTimeHistory.H"
+#include "OStringStream.H"
 #include "keywordCheck.H"
 #include "IFstream.H"
 #include "IStringStream.H"
@@ -17,7 +18,8 @@ Foam::functionObjects::impactTimeHistory::impactTimeHistory
     lastIndex_(-1),
     writePrecision_(15),
     writtenHeader_(false),
-    dict_(dict)
+    dict_(dict),
+    lastTime_(0)
 {
     impactTimeHistory::read(dict);
 
@@ -246,6 +248,8 @@ bool Foam::functionObjects::impactTimeHistory::write()
 
     DynamicList<scalar> row;
     values(row);
+    lastTime_ = time_.value();
+    lastRow_ = row;
 
     if (!file_.valid())
     {
@@ -266,6 +270,35 @@ bool Foam::functionObjects::impactTimeHistory::write()
     os  << endl;
 
     return true;
+}
+
+
+Foam::string Foam::functionObjects::impactTimeHistory::summaryLine() const
+{
+    if (lastRow_.empty())
+    {
+        return string();
+    }
+    const wordList names(columns());
+    const wordList unit(units());
+    const wordList shown(summaryColumns());
+    OStringStream os;
+    os.precision(6);
+    os  << name().c_str() << " at " << lastTime_ << " s:";
+    label n = 0;
+    forAll(names, i)
+    {
+        if (shown.found(names[i]) && i < lastRow_.size())
+        {
+            // (units without their brackets)
+            string u(unit[i]);
+            u.replaceAll("[", "");
+            u.replaceAll("]", "");
+            os  << (n++ ? ", " : " ") << names[i].c_str() << " "
+                << lastRow_[i] << (u == "-" ? "" : " " + u).c_str();
+        }
+    }
+    return os.str();
 }
 
 

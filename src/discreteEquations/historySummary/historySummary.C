@@ -1,0 +1,9 @@
+#include "historySummary.H"
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::historySummary::~historySummary()
+{}
+
+
+// ************************************************************************* //
