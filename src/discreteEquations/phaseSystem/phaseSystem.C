@@ -1,4 +1,5 @@
 #include "phaseSystem.H"
+#include "stepLedger.H"
 #include "correctBoundaryConditionsInPlace.H"
 #include "keywordCheck.H"
 #include "phaseMaterial.H"
@@ -43,6 +44,16 @@ void Foam::phaseSystem::checkFieldNames(const wordList& prefixes) const
 void Foam::phaseSystem::checkAlpha()
 {
     const label nCells = mesh_.nCells();
+    const bool restart = isFile
+    (
+        IOobject
+        (
+            stepLedger::typeName,
+            mesh_.time().timeName(),
+            "uniform",
+            mesh_
+        ).objectPath()
+    );
     forAll(phases_, k)
     {
         const scalarField& a = phases_[k].alpha().primitiveField();
@@ -74,13 +85,20 @@ void Foam::phaseSystem::checkAlpha()
                 << exit(FatalError);
         }
 
-        // Floor, and close the sum exactly with the largest phase
-        floorAndClose
-        (
-            phases_.size(),
-            regimes_.alphaMin(),
-            [&](const label k) -> scalar& { return alpha(k)[celli]; }
-        );
+        // Floor, and close the sum exactly with the largest phase; not at
+        // a time the solver wrote (its ledger is there): those fractions
+        // are its state, traces below alphaMin after the pressure
+        // relaxation's rescaling (numerics.md 9.5) included, and a restart
+        // takes them as they are, so that it continues the run exactly
+        if (!restart)
+        {
+            floorAndClose
+            (
+                phases_.size(),
+                regimes_.alphaMin(),
+                [&](const label k) -> scalar& { return alpha(k)[celli]; }
+            );
+        }
     }
 }
 
