@@ -87,8 +87,13 @@ void Foam::functionObjects::energyBudget::values(DynamicList<scalar>& row)
     const vectorField& U = phases.U().primitiveField();
     const label nPhases = phases.size();
 
-    // Per phase: kinetic, internal, elastic, plastic work
+    // Per phase: kinetic, internal, elastic, plastic work; and the mass
+    // and energy as the solver sums them (phaseSystem::totals, its totals
+    // line: the same terms in the same order, so equal to the digit),
+    // from the same evaluation of each cell's energies
     List<scalar> sums(4*nPhases, Zero);
+    scalar mass = 0;
+    scalar energy = 0;
     scalar carried[phaseModel::maxCarried];
     for (label k = 0; k < nPhases; ++k)
     {
@@ -103,11 +108,17 @@ void Foam::functionObjects::energyBudget::values(DynamicList<scalar>& row)
         forAll(V, c)
         {
             const scalar m = alpha[c]*rho[c]*V[c];
-            s[0] += 0.5*m*magSqr(phases[k].velocity(U[c], c));
-            s[1] += m*ph.eos().e(rho[c], p[c]);
+            const scalar u2 = magSqr(phases[k].velocity(U[c], c));
+            const scalar eh = ph.eos().e(rho[c], p[c]);
+            const scalar ee =
+                solid ? ph.elasticEnergy(foamEigen::toEigen((*A)[c])) : 0;
+            mass += m;
+            energy += m*((eh + ee) + 0.5*u2);
+            s[0] += 0.5*m*u2;
+            s[1] += m*eh;
             if (solid)
             {
-                s[2] += m*ph.elasticEnergy(foamEigen::toEigen((*A)[c]));
+                s[2] += m*ee;
                 phases[k].inelasticState(c, carried);
                 s[3] += m*inelastic.plasticWork(carried);
             }
@@ -115,6 +126,8 @@ void Foam::functionObjects::energyBudget::values(DynamicList<scalar>& row)
     }
     Pstream::listCombineGather(sums, plusEqOp<scalar>());
     Pstream::listCombineScatter(sums);
+    reduce(mass, sumOp<scalar>());
+    reduce(energy, sumOp<scalar>());
 
     // (the full body: every figure times toFull_)
     scalar total[4] = {0, 0, 0, 0};
@@ -127,14 +140,12 @@ void Foam::functionObjects::energyBudget::values(DynamicList<scalar>& row)
         }
     }
 
-    // The mass and energy as the solver sums them (its totals line)
-    const Pair<scalar> totals(phases.totals());
-    row.append(toFull_*totals.first());
+    row.append(toFull_*mass);
     for (label i = 0; i < 4; ++i)
     {
         row.append(toFull_*total[i]);
     }
-    row.append(toFull_*totals.second());
+    row.append(toFull_*energy);
     row.append(toFull_*ledger().unpaidEnergy());
     if (phases.sliding())
     {
