@@ -18,8 +18,9 @@ Checks
                     are unchanged by the study
   impactStudy_failed  a value Allrun fails with (-v abc): reported with the
                     run's log, its row nan, the others there, exit status 1
-  impactStudy_error_<what>  an option the Allrun does not have, no values:
-                    a message naming it, exit status 1, no traceback
+  impactStudy_error_<what>  an option the Allrun does not have, no values,
+                    an Allrun that does not parse options (not run): a
+                    message naming it, exit status 1, no traceback
 About 15 s.
 """
 import hashlib
@@ -150,12 +151,24 @@ def main():
                  "exit %d; %s" % (code3, " ".join(
                      l for l in out3.splitlines() if "abc" in l)[:200]))
 
-    for what, args, expect in (
-            ("option", ("speed", "1200"), ["no option -speed", "-v", "-np"]),
-            ("noValues", ("v",), ["at least one value"])):
-        code, out = study(case, *args)
+    # A case whose Allrun does not parse options (it would run on -help)
+    plain = os.path.join(RUN, "plainAllrun")
+    os.makedirs(plain, exist_ok=True)
+    with open(os.path.join(plain, "Allrun"), "w") as f:
+        f.write("#!/bin/bash\ntouch ran\n")
+    os.chmod(os.path.join(plain, "Allrun"), 0o755)
+    if os.path.exists(os.path.join(plain, "ran")):
+        os.remove(os.path.join(plain, "ran"))
+    for what, where, args, expect in (
+            ("option", case, ("speed", "1200"),
+             ["no option -speed", "-v", "-np"]),
+            ("noValues", case, ("v",), ["at least one value"]),
+            ("plainAllrun", plain, ("v", "1"),
+             ["does not declare its options", "impactParseOptions"])):
+        code, out = study(where, *args)
         ok = code == 1 and all(e in out for e in expect) \
-            and "Traceback" not in out
+            and "Traceback" not in out \
+            and not os.path.exists(os.path.join(plain, "ran"))
         checks.check("impactStudy_error_" + what, ok,
                      "exit %d: %s" % (code, out.strip()[:200]))
 
