@@ -94,12 +94,7 @@ def make_case(geometry, binary=False):
     case = fc.copy_tutorial(TEMPLATE, geometry + ("Binary" if binary
                                                  else ""), run_dir=RUN)
     if binary:
-        path = os.path.join(case, "system", "controlDict")
-        with open(path) as f:
-            text = f.read()
-        with open(path, "w") as f:
-            f.write(re.sub(r"writeFormat\s+ascii;", "writeFormat     binary;",
-                           text))
+        fc.set_entry(case, "system/controlDict", "writeFormat", "binary")
     path = os.path.join(case, "system", "impactDict")
     with open(path) as f:
         text = f.read()

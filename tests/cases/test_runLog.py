@@ -176,12 +176,7 @@ def check_restart():
     straight = new_case("restart_straight", control)
     legs = new_case("restart_legs", control)
     for case in (straight, legs):
-        path = os.path.join(case, "system", "controlDict")
-        with open(path) as f:
-            text = f.read()
-        with open(path, "w") as f:
-            f.write(re.sub(r"writePrecision\s+\d+;", "writePrecision  17;",
-                           text))
+        fc.set_entry(case, "system/controlDict", "writePrecision", "17")
         fc.run(case, ["impactFoam", "-endTime", "2e-6"])
     # The kill: the 2 us write lost, the tables' rows kept
     shutil.rmtree(os.path.join(legs, "2e-06"))
