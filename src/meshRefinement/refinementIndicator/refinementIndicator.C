@@ -1,0 +1,246 @@
+#include "refinementIndicator.H"
+#include "keywordCheck.H"
+#include "inputDefaults.H"
+#include "syncTools.H"
+
+// * * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * //
+
+const Foam::wordList Foam::refinementIndicator::keywords
+({
+    "interfaces", "shocks", "plasticFlow"
+});
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::refinementIndicator::refinementIndicator
+(
+    const phaseSystem& phases,
+    const dictionary& dict
+)
+:
+    phases_(phases),
+    interfaces_(dict.found("interfaces")),
+    alphaLower_(1e-3),
+    alphaUpper_(0.999),
+    shocks_(dict.found("shocks")),
+    jump_(0.1),
+    pRef_(1e5),
+    plastic_(dict.found("plasticFlow")),
+    rate_(1e3),
+    epsilonPIndex_(phases.size(), -1),
+    epsilonP0_(phases.size()),
+    t0_(phases.mesh().time().value())
+{
+    const string owner("refinement");
+    if (interfaces_)
+    {
+        const dictionary& d = dict.subDict("interfaces");
+        checkKeywords(d, {"lower", "upper"}, owner + " interfaces");
+        alphaLower_ = inputDefaults::get(d, "lower", alphaLower_, owner);
+        alphaUpper_ = inputDefaults::get(d, "upper", alphaUpper_, owner);
+        if (!(0 < alphaLower_ && alphaLower_ < alphaUpper_ && alphaUpper_ < 1))
+        {
+            FatalIOErrorInFunction(d)
+                << "Need 0 < lower (" << alphaLower_ << ") < upper ("
+                << alphaUpper_ << ") < 1" << exit(FatalIOError);
+        }
+    }
+    if (shocks_)
+    {
+        const dictionary& d = dict.subDict("shocks");
+        checkKeywords(d, {"jump", "pRef"}, owner + " shocks");
+        jump_ = inputDefaults::get(d, "jump", jump_, owner);
+        pRef_ = inputDefaults::get(d, "pRef", pRef_, owner);
+        if (!(jump_ > 0) || !(pRef_ >= 0))
+        {
+            FatalIOErrorInFunction(d)
+                << "Need jump > 0 (" << jump_ << ") and pRef >= 0 ("
+                << pRef_ << ")" << exit(FatalIOError);
+        }
+    }
+    if (plastic_)
+    {
+        const dictionary& d = dict.subDict("plasticFlow");
+        checkKeywords(d, {"rate"}, owner + " plasticFlow");
+        rate_ = inputDefaults::get(d, "rate", rate_, owner);
+        if (!(rate_ > 0))
+        {
+            FatalIOErrorInFunction(d)
+                << "Need rate > 0, not " << rate_ << exit(FatalIOError);
+        }
+        bool any = false;
+        for (label k = 0; k < phases.size(); ++k)
+        {
+            epsilonPIndex_[k] = phases[k].carriedIndex("epsilonP");
+            any = any || epsilonPIndex_[k] >= 0;
+        }
+        if (!any)
+        {
+            FatalIOErrorInFunction(d)
+                << "plasticFlow asks for refinement where solids flow, but"
+                << " no phase of " << phases.names() << " carries a plastic"
+                << " strain epsilonP" << exit(FatalIOError);
+        }
+    }
+    if (!interfaces_ && !shocks_ && !plastic_)
+    {
+        FatalIOErrorInFunction(dict)
+            << "No criterion for refinement: give at least one of "
+            << keywords << exit(FatalIOError);
+    }
+    store();
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::refinementIndicator::markInterfaces(bitSet& cells) const
+{
+    for (label k = 0; k < phases_.size(); ++k)
+    {
+        const scalarField& alpha = phases_.alpha(k).primitiveField();
+        forAll(alpha, c)
+        {
+            if (alpha[c] > alphaLower_ && alpha[c] < alphaUpper_)
+            {
+                cells.set(c);
+            }
+        }
+    }
+}
+
+
+void Foam::refinementIndicator::markShocks(bitSet& cells) const
+{
+    const fvMesh& mesh = phases_.mesh();
+    const label nCells = mesh.nCells();
+
+    // The mixture's density and pressure
+    scalarField rho(nCells, Zero);
+    scalarField p(nCells, Zero);
+    for (label k = 0; k < phases_.size(); ++k)
+    {
+        const scalarField& alpha = phases_.alpha(k).primitiveField();
+        const scalarField& rhok = phases_.rho(k).primitiveField();
+        const scalarField& pk = phases_.p(k).primitiveField();
+        forAll(rho, c)
+        {
+            rho[c] += alpha[c]*rhok[c];
+            p[c] += alpha[c]*pk[c];
+        }
+    }
+
+    const auto jumps = [this](scalar r1, scalar r2, scalar p1, scalar p2)
+    {
+        const scalar rMax = max(r1, r2);
+        return
+            (rMax > 0 && mag(r1 - r2) > jump_*rMax)
+         || mag(p1 - p2) > jump_*(max(mag(p1), mag(p2)) + pRef_);
+    };
+
+    const labelUList& own = mesh.owner();
+    const labelUList& nei = mesh.neighbour();
+    forAll(nei, f)
+    {
+        const label o = own[f];
+        const label n = nei[f];
+        if (jumps(rho[o], rho[n], p[o], p[n]))
+        {
+            cells.set(o);
+            cells.set(n);
+        }
+    }
+
+    // Across processor boundaries: the other side's values
+    scalarField rhoNbr;
+    scalarField pNbr;
+    syncTools::swapBoundaryCellList(mesh, rho, rhoNbr);
+    syncTools::swapBoundaryCellList(mesh, p, pNbr);
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    const label start = mesh.nInternalFaces();
+    forAll(patches, patchi)
+    {
+        const polyPatch& pp = patches[patchi];
+        if (!pp.coupled())
+        {
+            continue;
+        }
+        forAll(pp, i)
+        {
+            const label f = pp.start() + i;
+            const label o = own[f];
+            if (jumps(rho[o], rhoNbr[f - start], p[o], pNbr[f - start]))
+            {
+                cells.set(o);
+            }
+        }
+    }
+}
+
+
+void Foam::refinementIndicator::markPlasticFlow(bitSet& cells) const
+{
+    const scalar dt = phases_.mesh().time().value() - t0_;
+    if (!(dt > 0))
+    {
+        return;
+    }
+    for (label k = 0; k < phases_.size(); ++k)
+    {
+        const label i = epsilonPIndex_[k];
+        if (i < 0)
+        {
+            continue;
+        }
+        const scalarField& eps = phases_[k].carried(i).primitiveField();
+        const scalarField& eps0 = epsilonP0_[k];
+        forAll(eps, c)
+        {
+            if (eps[c] - eps0[c] > rate_*dt)
+            {
+                cells.set(c);
+            }
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::refinementIndicator::mark(bitSet& cells) const
+{
+    if (interfaces_)
+    {
+        markInterfaces(cells);
+    }
+    if (shocks_)
+    {
+        markShocks(cells);
+    }
+    if (plastic_)
+    {
+        markPlasticFlow(cells);
+    }
+}
+
+
+void Foam::refinementIndicator::store()
+{
+    if (!plastic_)
+    {
+        return;
+    }
+    for (label k = 0; k < phases_.size(); ++k)
+    {
+        if (epsilonPIndex_[k] >= 0)
+        {
+            epsilonP0_[k] =
+                phases_[k].carried(epsilonPIndex_[k]).primitiveField();
+        }
+    }
+    t0_ = phases_.mesh().time().value();
+}
+
+
+// ************************************************************************* //
