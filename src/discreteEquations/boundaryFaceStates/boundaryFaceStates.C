@@ -205,3 +205,12 @@ void Foam::boundaryFaceStates::ghost
 }
 
 
+
+void Foam::boundaryFaceStates::updateMesh()
+{
+    coupledOwn_ = List<std::vector<std::vector<phaseSide>>>
+    (
+        mesh_.boundary().size()
+    );
+    nbrStates_ = List<scalarList>(mesh_.boundary().size());
+}

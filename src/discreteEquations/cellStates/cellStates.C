@@ -11,12 +11,18 @@ Foam::cellStates::cellStates(const phaseSystem& phases)
     speeds_(phases.size()),
     sigma_(phases.size())
 {
-    const label nCells = phases.mesh().nCells();
-    for (label k = 0; k < phases.size(); ++k)
+    updateMesh();
+}
+
+
+void Foam::cellStates::updateMesh()
+{
+    const label nCells = phases_.mesh().nCells();
+    for (label k = 0; k < phases_.size(); ++k)
     {
         E_[k].resize(nCells);
         speeds_[k].resize(nCells);
-        if (phases.phase(k).solid())
+        if (phases_.phase(k).solid())
         {
             sigma_[k].resize(nCells);
         }

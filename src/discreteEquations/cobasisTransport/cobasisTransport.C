@@ -44,14 +44,7 @@ Foam::cobasisTransport::cobasisTransport
         )
      == rotation::keep;
 
-    const label nCells = phases.mesh().nCells();
-    for (label k = 0; k < nPhases_; ++k)
-    {
-        if (phases.phase(k).solid())
-        {
-            slot_[k].assign(nCells, -1);
-        }
-    }
+    updateMesh();
 }
 
 
@@ -114,6 +107,23 @@ void Foam::cobasisTransport::assignSums(const label k)
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::cobasisTransport::updateMesh()
+{
+    const label nCells = phases_.mesh().nCells();
+    near_.setSize(nCells);
+    near_ = false;
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        if (phases_.phase(k).solid())
+        {
+            slot_[k].assign(nCells, -1);
+        }
+        A_[k] = nullptr;
+    }
+    rec_ = nullptr;
+}
+
 
 void Foam::cobasisTransport::reset(const reconstruction& rec)
 {

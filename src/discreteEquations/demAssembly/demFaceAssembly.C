@@ -209,6 +209,22 @@ Foam::riemannState Foam::demFaceAssembly::faceFrameState
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::demFaceAssembly::updateMesh()
+{
+    const label nCells = phases_.mesh().nCells();
+    for (label k = 0; k < nPhases_; ++k)
+    {
+        sums_[k].resize(nCells*stride_[k]);
+    }
+
+    // The time-centred states' slots, allocated again by reset() (the
+    // pool of states is kept)
+    centreSlot_.clear();
+    centreStamp_.clear();
+    nCentres_ = 0;
+}
+
+
 void Foam::demFaceAssembly::reset()
 {
     const label nCells = phases_.mesh().nCells();

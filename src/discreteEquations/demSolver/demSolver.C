@@ -19,6 +19,7 @@ Foam::demSolver::demSolver
     phases_(phases),
     mesh_(phases.mesh()),
     nPhases_(phases.size()),
+    schemeDict_(schemeDict),
     cells_(phases),
     timeStep_(phases),
     reconstruction_(reconstruction::New(phases, cells_, schemeDict)),
@@ -361,6 +362,27 @@ void Foam::demSolver::prepare()
 
     // Where solids that may slide meet (their velocity relaxation)
     phases_.updateSliding();
+}
+
+
+void Foam::demSolver::updateMesh()
+{
+    cells_.updateMesh();
+    timeStep_.updateMesh();
+
+    // (its options read again: they are those read at the start; the
+    // notes of the defaults it takes are not printed again)
+    reconstruction_.reset
+    (
+        reconstruction::New(phases_, cells_, schemeDict_).ptr()
+    );
+
+    boundaryStates_.updateMesh();
+    assembly_.updateMesh();
+    cobasis_.updateMesh();
+    fallback_.updateMesh();
+    reconstruction_->setFirstOrderCells(&fallback_.cells());
+    wedges_.updateMesh();
 }
 
 

@@ -145,6 +145,18 @@ void Foam::firstOrderFallback::countStep
 }
 
 
+void Foam::firstOrderFallback::updateMesh()
+{
+    // (the same lists: the reconstruction holds cells_)
+    cells_.setSize(mesh_.nCells());
+    cells_ = false;
+    faces_.setSize(mesh_.nFaces());
+    faces_ = false;
+    flagged_.clear();
+    nFaces_ = 0;
+}
+
+
 void Foam::firstOrderFallback::report() const
 {
     const scalar cells = returnReduce(cellSteps_, sumOp<scalar>());

@@ -504,3 +504,15 @@ void Foam::phaseSystem::restoreState()
     correctBoundaryConditions();
     correctMixture();
 }
+
+
+void Foam::phaseSystem::updateMesh()
+{
+    if (sliding_.valid())
+    {
+        sliding_->updateMesh();
+    }
+    correctBoundaryConditions();
+    correctMixture();
+    saveState();
+}

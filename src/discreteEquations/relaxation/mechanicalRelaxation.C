@@ -300,3 +300,10 @@ Foam::mechanicalRelaxation::stateError Foam::mechanicalRelaxation::correct
 
     return checks_.first();
 }
+
+
+void Foam::mechanicalRelaxation::updateMesh()
+{
+    ledger_.updateMesh(phases_.mesh().V());
+    checks_.reset();
+}

@@ -31,18 +31,7 @@ Foam::slidingInterfaces::slidingInterfaces
             }
         }
     }
-    const label nCells = mesh.nCells();
-    k_.assign(nCells, -1);
-    j_.assign(nCells, -1);
-    normal_.assign(nCells, vector::zero);
-    area_.assign(nCells, 0);
-    active_.assign(nCells, 0);
-    score_.assign(nCells, 0);
-    grad_.resize(nCells);
-    hoodK_.resize(nCells);
-    hoodJ_.resize(nCells);
-    sum_.resize(nCells);
-    weight_.resize(nCells);
+    updateMesh();
 }
 
 
@@ -377,5 +366,21 @@ void Foam::slidingInterfaces::shareArea
     }
 }
 
+
+void Foam::slidingInterfaces::updateMesh()
+{
+    const label nCells = mesh_.nCells();
+    k_.assign(nCells, -1);
+    j_.assign(nCells, -1);
+    normal_.assign(nCells, vector::zero);
+    area_.assign(nCells, 0);
+    active_.assign(nCells, 0);
+    score_.assign(nCells, 0);
+    grad_.resize(nCells);
+    hoodK_.resize(nCells);
+    hoodJ_.resize(nCells);
+    sum_.resize(nCells);
+    weight_.resize(nCells);
+}
 
 // ************************************************************************* //

@@ -12,6 +12,16 @@ Foam::stableTimeStep::stableTimeStep(const phaseSystem& phases)
 {}
 
 
+void Foam::stableTimeStep::updateMesh()
+{
+    // (a cell label of the old mesh)
+    limitingCell_ = -1;
+    limitingSpeed_ = 0;
+    aMax_.setSize(mesh_.nCells());
+    sumLambda_.setSize(mesh_.nCells());
+}
+
+
 Foam::scalar Foam::stableTimeStep::deltaT(const cellStates& cells) const
 {
     const label nCells = mesh_.nCells();

@@ -109,3 +109,10 @@ void Foam::voidVelocity::correct()
         }
     }
 }
+
+
+void Foam::voidVelocity::updateMesh()
+{
+    isVoid_.setSize(phases_.mesh().nCells());
+    isVoid_ = false;
+}

@@ -25,26 +25,42 @@ Foam::wedgeImages::wedgeImages
 )
 :
     mesh_(mesh),
+    kinds_(kinds),
+    enabled_(true),
     patchA_(-1),
     patchB_(-1),
     Q_(cobasis::matrix::Identity())
 {
-    pair(kinds, schemeDict);
+    bool wedge = false;
+    forAll(mesh_.boundary(), patchi)
+    {
+        wedge = wedge || kinds[patchi] == boundaryKinds::kind::wedge;
+    }
+    if (wedge)
+    {
+        enabled_ = inputDefaults::get<Switch>
+        (
+            schemeDict, "wedgeImages", Switch(true), "discreteEquations"
+        );
+    }
+    pair(true);
 }
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::wedgeImages::pair
-(
-    const boundaryKinds& kinds,
-    const dictionary& schemeDict
-)
+void Foam::wedgeImages::pair(const bool report)
 {
+    const bool paired = patchA_ >= 0;
+    patchA_ = -1;
+    patchB_ = -1;
+    image_.clear();
+    Q_ = cobasis::matrix::Identity();
+
     labelList wedges;
     forAll(mesh_.boundary(), patchi)
     {
-        if (kinds[patchi] == boundaryKinds::kind::wedge)
+        if (kinds_[patchi] == boundaryKinds::kind::wedge)
         {
             wedges.append(patchi);
         }
@@ -53,15 +69,12 @@ void Foam::wedgeImages::pair
     {
         return;
     }
-    if
-    (
-        !inputDefaults::get<Switch>
-        (
-            schemeDict, "wedgeImages", Switch(true), "discreteEquations"
-        )
-    )
+    if (!enabled_)
     {
-        Info<< "Wedge faces: each solved (wedgeImages no)" << nl;
+        if (report)
+        {
+            Info<< "Wedge faces: each solved (wedgeImages no)" << nl;
+        }
         return;
     }
 
@@ -146,15 +159,21 @@ void Foam::wedgeImages::pair
         {
             reason = "not on every processor";
         }
-        Info<< "Wedge faces: each solved (" << reason << ")" << nl;
+        if (report || paired)
+        {
+            Info<< "Wedge faces: each solved (" << reason << ")" << nl;
+        }
         return;
     }
     patchA_ = wedges[0];
     patchB_ = wedges[1];
     image_.transfer(image);
     Q_ = Q;
-    Info<< "Wedge faces: " << mesh_.boundary()[patchB_].name()
-        << " as the image of " << mesh_.boundary()[patchA_].name() << nl;
+    if (report)
+    {
+        Info<< "Wedge faces: " << mesh_.boundary()[patchB_].name()
+            << " as the image of " << mesh_.boundary()[patchA_].name() << nl;
+    }
 }
 
 
@@ -191,6 +210,12 @@ void Foam::wedgeImages::addImage
     const label fb = image_[i];
     assembly.addImageToCell(celli, magSfB(fb), Q_);
     cobasis.addFace(celli, toEigen(Sf[fb]), side, side, assembly, &Q_);
+}
+
+
+void Foam::wedgeImages::updateMesh()
+{
+    pair(false);
 }
 
 

@@ -122,3 +122,14 @@ void Foam::bodyForces::addSources(const scalar dt, conservedState& q) const
         }
     }
 }
+
+
+void Foam::bodyForces::updateMesh()
+{
+    if (active())
+    {
+        // (the same field: the solver holds it)
+        acceleration_.setSize(mesh_.nCells());
+        acceleration_ = Zero;
+    }
+}
