@@ -20,7 +20,7 @@ void Foam::checkControlDict(const Time& runTime)
         "writeVersion",
         // impactFoam's
         "maxCo", "maxDeltaT", "minDeltaTFactor", "debugDeltaT",
-        "progressInterval"
+        "progressInterval", "rebuildSolverParts"
     });
     checkKeywords(dict, valid, "system/controlDict");
 

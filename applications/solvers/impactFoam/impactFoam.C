@@ -36,6 +36,7 @@ Description
 #include "stepReport.H"
 #include "progressLog.H"
 #include "controlDictCheck.H"
+#include "meshChange.H"
 #include "inputDefaults.H"
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -94,6 +95,11 @@ int main(int argc, char *argv[])
     stepReport report(phases, relaxation, dem, voidCells);
     progressLog progress(runTime, phases);
 
+    // A topology change of the mesh reaches the parts above through
+    // updateSolverParts only (meshChange.H); rebuildSolverParts N: through
+    // it after every N-th accepted step on the unchanged mesh (a test)
+    const label rebuildInterval(rebuildSolverPartsInterval(runTime));
+
     // The defaults the models took for entries not given, in one block
     inputDefaults::print(Info);
 
@@ -137,6 +143,16 @@ int main(int argc, char *argv[])
             report.logTotals(false);
         }
         progress.step();
+
+        if
+        (
+            rebuildInterval > 0
+         && (runTime.timeIndex() - runTime.startTimeIndex())
+           % rebuildInterval == 0
+        )
+        {
+            updateSolverParts(phases, dem, relaxation, voidCells, forces, step);
+        }
     }
 
     // The final state, also when endTime is not a write time

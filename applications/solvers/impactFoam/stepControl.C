@@ -313,3 +313,9 @@ void Foam::stepControl::write()
         pendingWrite_ = -1;
     }
 }
+
+
+void Foam::stepControl::updateMesh()
+{
+    q_ = conservedState();
+}
