@@ -31,14 +31,6 @@ Foam::hexRefinement::hexRefinement
     startIndex_(mesh.time().timeIndex()),
     heat_(0)
 {
-    wordList valid
-    ({
-        "maxRefinement", "refineInterval", "maxCells", "nBufferLayers",
-        "unrefine"
-    });
-    valid.append(refinementIndicator::keywords);
-    checkKeywords(dict, valid, "refinement");
-
     if (maxRefinement_ < 1 || refineInterval_ < 1 || nBufferLayers_ < 0)
     {
         FatalIOErrorInFunction(dict)
@@ -85,6 +77,16 @@ Foam::autoPtr<Foam::hexRefinement> Foam::hexRefinement::New
         return nullptr;
     }
     const IOdictionary dict(io);
+
+    // Every entry known before any is read
+    wordList valid
+    ({
+        "maxRefinement", "refineInterval", "maxCells", "nBufferLayers",
+        "unrefine"
+    });
+    valid.append(refinementIndicator::keywords);
+    checkKeywords(dict, valid, "refinement");
+
     return autoPtr<hexRefinement>::New(mesh, phases, dict);
 }
 

@@ -1,0 +1,274 @@
+#!/usr/bin/python3
+"""Adaptive refinement's mapping (docs/numerics.md section 12): a refine /
+unrefine cycle of a 3-D case with two solids, a gas and a shock in it
+conserves every phase's mass, the momentum and the total energy to
+round-off, and brings the state back to itself.
+
+The case: the projectileOnPlate template in 3-D (a quarter: symmetry planes
+y = 0 and z = 0, 2 mm cells, 720 cells), run 2 us past the impact so that
+a shock runs through the plate and the rod. tests/tools/refinementCheck
+reads it with constant/refinementProperties (interfaces and shocks, two
+levels, one buffer layer), refines twice where the criteria mark cells,
+unrefines with nothing marked until the mesh is the base mesh again, and
+refines once more; after each change it prints the cells, each phase's
+mass, the momentum and the total energy (phaseSystem's sums) and the
+kinetic energy turned into heat by merging; after the unrefinement, the
+largest difference of the state from the start (roundTrip: U, each
+phase's alpha, rho, e over its largest c^2, cobasis and carried variables,
+each relative to its largest magnitude).
+
+Decides:
+  conservation   every phase's mass and the total energy within 1e-12
+                 relative of the start after every change, the momentum
+                 within 1e-12 of its magnitude (measured: 1e-14, 4e-13,
+                 2e-14);
+  levels         both levels reached, and the base mesh again at the end;
+  round trip     roundTrip <= 1e-12 (measured 5e-15): the children copy
+                 their parent, a merged cell of eight copies is the cell;
+  heat           the kinetic energy turned into heat >= -1e-12 of the
+                 total energy (merging never creates kinetic energy);
+  parallel       the same on 2 processes: the same cells after every
+                 change and the same sums within 1e-12;
+  restart        the refined state written (-write) holds the mesh and
+                 the levels in its time's polyMesh, and impactFoam runs
+                 on from it;
+  bad input      refinement on an axisymmetric wedge, a misspelled entry,
+                 no criterion: each stops with an error naming it.
+About 30 s.
+"""
+import os
+import re
+import shutil
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "lib"))
+
+import foamcase as fc  # noqa: E402
+from checks import Checks  # noqa: E402
+
+TEMPLATE = os.path.join("templates", "projectileOnPlate")
+
+QUARTER = [
+    ("geometry    axisymmetric;", "geometry    threeD;"),
+    ("max         (60e-3 20e-3 0);", "max         (30e-3 12e-3 12e-3);"),
+    ("cellSize    0.25e-3;", "cellSize    2e-3;"),
+    ("        yMax    open;", "        yMin    symmetry;\n        yMax    open;"
+     "\n        zMin    symmetry;\n        zMax    open;"),
+    ("length      40e-3;", "length      20e-3;"),
+    ("min         (-10e-3 0 -1);", "min         (-10e-3 0 0);"),
+    ("max         (0 15e-3 1);", "max         (0 12e-3 12e-3);"),
+]
+
+PROPERTIES = """FoamFile { version 2.0; format ascii; class dictionary;
+           object refinementProperties; }
+maxRefinement   2;
+refineInterval  5;
+nBufferLayers   1;
+interfaces      { lower 1e-3; upper 0.999; }
+shocks          { jump 0.1; }
+"""
+
+LINE = re.compile(r"^cells (\d+) mass (.*) momentum (\S+) (\S+) (\S+) "
+                  r"energy (\S+) heat (\S+)$", re.M)
+
+
+def make_case(name):
+    case = fc.copy_tutorial(TEMPLATE, name)
+    path = os.path.join(case, "system", "impactDict")
+    with open(path) as f:
+        text = f.read()
+    for old, new in QUARTER:
+        if old not in text:
+            raise fc.FoamError("template impactDict: no %r" % old)
+        text = text.replace(old, new, 1)
+    with open(path, "w") as f:
+        f.write(text)
+    fc.run(case, ["impactSetup"])
+    fc.run(case, ["impactFoam", "-endTime", "2e-6"])
+    fc.set_entry(case, "system/controlDict", "startFrom", "latestTime")
+    with open(os.path.join(case, "constant", "refinementProperties"),
+              "w") as f:
+        f.write(PROPERTIES)
+    return case
+
+
+def parse(log):
+    text = open(log).read()
+    rows = []
+    for m in LINE.finditer(text):
+        rows.append({
+            "cells": int(m.group(1)),
+            "mass": [float(v) for v in m.group(2).split()],
+            "momentum": [float(m.group(i)) for i in (3, 4, 5)],
+            "energy": float(m.group(6)),
+            "heat": float(m.group(7)),
+        })
+    rt = re.search(r"^roundTrip (\S+)", text, re.M)
+    levels = re.findall(r"per level \d+\(([\d ]+)\)", text)
+    return rows, (float(rt.group(1)) if rt else None), \
+        [[int(v) for v in lv.split()] for lv in levels]
+
+
+def drift(rows):
+    """Largest relative change of the sums from the first row"""
+    r0 = rows[0]
+    pScale = sum(v * v for v in r0["momentum"]) ** 0.5
+    worst = {"mass": 0.0, "momentum": 0.0, "energy": 0.0}
+    for r in rows[1:]:
+        for m, m0 in zip(r["mass"], r0["mass"]):
+            worst["mass"] = max(worst["mass"], abs(m - m0) / m0)
+        dp = sum((a - b) ** 2 for a, b in
+                 zip(r["momentum"], r0["momentum"])) ** 0.5
+        worst["momentum"] = max(worst["momentum"], dp / pScale)
+        worst["energy"] = max(worst["energy"],
+                              abs(r["energy"] - r0["energy"]) / r0["energy"])
+    return worst
+
+
+def check_cycle(checks, name, rows, round_trip, levels):
+    ok = len(rows) >= 5
+    checks.check(name + "_changes", ok,
+                 "%d states printed (start, two refinements, two "
+                 "unrefinements, one refinement: 6 expected); cells %s"
+                 % (len(rows), [r["cells"] for r in rows]))
+    if not ok:
+        return
+    w = drift(rows)
+    checks.check(
+        name + "_conservation",
+        w["mass"] <= 1e-12 and w["momentum"] <= 1e-12
+        and w["energy"] <= 1e-12,
+        "largest change over %d changes of the mesh: phase masses %.2g, "
+        "momentum %.2g (of its magnitude), total energy %.2g (bound 1e-12)"
+        % (len(rows) - 1, w["mass"], w["momentum"], w["energy"]))
+    top = max((lv[2] if len(lv) > 2 else 0) for lv in levels) \
+        if levels else 0
+    back = rows[0]["cells"] in [r["cells"] for r in rows[3:-1]]
+    checks.check(
+        name + "_levels", top > 0 and back,
+        "%d cells at level 2 at the finest; the base mesh's %d cells "
+        "again after the unrefinement: %s" % (top, rows[0]["cells"], back))
+    checks.check(
+        name + "_roundTrip",
+        round_trip is not None and round_trip <= 1e-12,
+        "state after refine / unrefine against the start: largest "
+        "relative difference %s (bound 1e-12)" % round_trip)
+    heat = min(r["heat"] for r in rows)
+    checks.check(
+        name + "_heat", heat >= -1e-12 * rows[0]["energy"],
+        "kinetic energy turned into heat by merging: %.3g J at the end, "
+        "smallest %.3g J (bound >= -1e-12 of %.6g J)"
+        % (rows[-1]["heat"], heat, rows[0]["energy"]))
+
+
+def bad_input(checks, case):
+    """Each bad refinementProperties stops refinementCheck with a message
+    naming the problem"""
+    props = os.path.join(case, "constant", "refinementProperties")
+    cases = [
+        ("misspelled", PROPERTIES.replace("maxRefinement", "maxRefinment"),
+         "maxRefinment"),
+        ("noCriterion", PROPERTIES.replace(
+            "interfaces      { lower 1e-3; upper 0.999; }", "").replace(
+            "shocks          { jump 0.1; }", ""), "No criterion"),
+        ("badRange", PROPERTIES.replace("lower 1e-3", "lower 0.9999"),
+         "lower"),
+    ]
+    for name, text, expect in cases:
+        with open(props, "w") as f:
+            f.write(text)
+        log = fc.run(case, ["refinementCheck"],
+                     log="log.refinementCheck." + name, check=False)
+        out = open(log).read()
+        checks.check("refinement_badInput_" + name,
+                     "FOAM FATAL" in out and expect in out,
+                     "refinementCheck stops naming %r: %s"
+                     % (expect, "FOAM FATAL" in out and expect in out))
+    with open(props, "w") as f:
+        f.write(PROPERTIES)
+
+    wedge = fc.copy_tutorial(TEMPLATE, "refinement_wedge")
+    path = os.path.join(wedge, "system", "impactDict")
+    with open(path) as f:
+        text = f.read()
+    with open(path, "w") as f:
+        f.write(text.replace("cellSize    0.25e-3;", "cellSize    2e-3;"))
+    fc.run(wedge, ["impactSetup"])
+    with open(os.path.join(wedge, "constant", "refinementProperties"),
+              "w") as f:
+        f.write(PROPERTIES)
+    log = fc.run(wedge, ["refinementCheck"], check=False)
+    out = open(log).read()
+    ok = "FOAM FATAL" in out and "wedge" in out and "3-D" in out
+    checks.check("refinement_badInput_wedge", ok,
+                 "an axisymmetric mesh refused, naming its wedge patch: %s"
+                 % ok)
+
+
+def main():
+    checks = Checks()
+    missing = fc.require_apps("refinementCheck", "impactSetup", "impactFoam",
+                              "decomposePar")
+    if missing:
+        checks.fail("refinement", "missing: %s" % ", ".join(missing))
+        checks.exit()
+
+    case = make_case("refinement_cycle")
+    parallel = os.path.join(fc.RUN_DIR, "refinement_parallel")
+    if os.path.lexists(parallel):
+        shutil.rmtree(parallel)
+    shutil.copytree(case, parallel)
+
+    rows, rt, levels = parse(fc.run(case, ["refinementCheck", "-write"]))
+    check_cycle(checks, "refinement_serial", rows, rt, levels)
+
+    fc.write_decompose_dict(parallel, 2)
+    fc.run(parallel, ["decomposePar", "-force", "-latestTime"])
+    prow, prt, plevels = parse(fc.run(
+        parallel, "mpirun -np 2 --oversubscribe refinementCheck -parallel",
+        log="log.refinementCheck.parallel"))
+    check_cycle(checks, "refinement_parallel", prow, prt, plevels)
+    same = len(prow) == len(rows) and all(
+        a["cells"] == b["cells"]
+        and abs(a["energy"] - b["energy"]) <= 1e-12 * b["energy"]
+        and all(abs(x - y) <= 1e-12 * y for x, y in zip(a["mass"], b["mass"]))
+        for a, b in zip(prow, rows))
+    checks.check("refinement_serialParallel", same,
+                 "2 processes against serial: cells %s and %s, the sums "
+                 "within 1e-12" % ([r["cells"] for r in prow],
+                                   [r["cells"] for r in rows]))
+
+    # The written refined state: mesh and levels with the fields, and the
+    # solver runs on from it
+    t = fc.latest_time(case)
+    mesh_dir = os.path.join(case, t, "polyMesh")
+    have = all(os.path.isfile(os.path.join(mesh_dir, f)) for f in
+               ("points", "faces", "owner", "neighbour", "cellLevel",
+                "pointLevel", "refinementHistory"))
+    owner = os.path.join(mesh_dir, "owner")
+    m = re.search(r"nCells\s*:\s*(\d+)",
+                  open(owner).read(4000)) if have else None
+    mesh_n = int(m.group(1)) if m else None
+    field_n = len(fc.read_field(case, t, "alpha.rod"))
+    refined = rows[-1]["cells"] if rows else None
+    checks.check("refinement_written",
+                 have and mesh_n == refined and field_n == refined,
+                 "time %s holds the refined mesh and its levels: %s; the "
+                 "mesh has %s cells, alpha.rod %s, the refined state %s"
+                 % (t, have, mesh_n, field_n, refined))
+    os.remove(os.path.join(case, "constant", "refinementProperties"))
+    log = fc.run(case, ["impactFoam", "-endTime", "2.2e-6"],
+                 log="log.impactFoam.restart", check=False)
+    out = open(log).read()
+    checks.check("refinement_restart", "FOAM FATAL" not in out
+                 and out.rstrip().endswith("End"),
+                 "impactFoam on from the refined state %s to 2.2 us: %s"
+                 % (t, "ran" if "FOAM FATAL" not in out else fc.tail(log)))
+
+    bad_input(checks, parallel)
+    checks.exit()
+
+
+if __name__ == "__main__":
+    main()
