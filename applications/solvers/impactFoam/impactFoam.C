@@ -35,6 +35,7 @@ Description
 #include "stepControl.H"
 #include "stepReport.H"
 #include "progressLog.H"
+#include "hexRefinement.H"
 #include "controlDictCheck.H"
 #include "meshChange.H"
 #include "inputDefaults.H"
@@ -87,6 +88,16 @@ int main(int argc, char *argv[])
     #include "createMesh.H"
 
     phaseSystem phases(mesh);
+
+    // Adaptive refinement (constant/refinementProperties; docs/numerics.md
+    // 11): at the start of a run the mesh is refined where the criteria
+    // mark cells, before the solver's parts are built on it
+    autoPtr<hexRefinement> refinement(hexRefinement::New(mesh, phases));
+    if (refinement && runTime.startTimeIndex() == 0)
+    {
+        refinement->initialise();
+    }
+
     demSolver dem(phases, mesh.schemesDict().subOrEmptyDict("discreteEquations"));
     mechanicalRelaxation relaxation(phases);
     voidVelocity voidCells(phases);
@@ -94,6 +105,7 @@ int main(int argc, char *argv[])
     stepControl step(runTime, phases, dem, relaxation, forces);
     stepReport report(phases, relaxation, dem, voidCells);
     progressLog progress(runTime, phases);
+    step.setRefinement(refinement.get());
 
     // A topology change of the mesh reaches the parts above through
     // updateSolverParts only (meshChange.H); rebuildSolverParts N: through
@@ -144,7 +156,13 @@ int main(int argc, char *argv[])
         }
         progress.step();
 
-        if
+        // The mesh refined and unrefined every refineInterval steps, the
+        // phase state carried over, the parts brought to the new mesh
+        if (refinement && refinement->update())
+        {
+            updateSolverParts(phases, dem, relaxation, voidCells, forces, step);
+        }
+        else if
         (
             rebuildInterval > 0
          && (runTime.timeIndex() - runTime.startTimeIndex())
@@ -159,7 +177,7 @@ int main(int argc, char *argv[])
     if (!runTime.writeTime() && runTime.timeIndex() != runTime.startTimeIndex())
     {
         phases.correctOutputs();
-        runTime.writeNow();
+        step.writeNow();
     }
 
     dem.fallback().report();

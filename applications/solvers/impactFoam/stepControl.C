@@ -54,7 +54,8 @@ Foam::stepControl::stepControl
     pendingWrite_(-1),
     oldTime_(runTime.value()),
     oldIndex_(runTime.timeIndex()),
-    dtStable_(GREAT)
+    dtStable_(GREAT),
+    refinement_(nullptr)
 {
     if (!(maxCo_ > 0 && maxCo_ <= 1))
     {
@@ -188,7 +189,7 @@ bool Foam::stepControl::accept
 
     phases_.restoreState();
     runTime_.setTime(oldTime_, oldIndex_);
-    runTime_.writeNow();
+    writeTime(true);
 
     // Every processor has written before any of them stops the run (a
     // fatal error on one aborts the others, mid-write)
@@ -303,14 +304,35 @@ void Foam::stepControl::write()
         phases_.correctOutputs();
     }
 
-    runTime_.write();
+    writeTime(false);
     if (pendingNow)
     {
         if (!runTime_.writeTime())
         {
-            runTime_.writeNow();
+            writeTime(true);
         }
         pendingWrite_ = -1;
+    }
+}
+
+
+void Foam::stepControl::writeTime(const bool now)
+{
+    if (refinement_)
+    {
+        refinement_->setInstance();
+    }
+    if (now)
+    {
+        runTime_.writeNow();
+    }
+    else
+    {
+        runTime_.write();
+    }
+    if (refinement_)
+    {
+        refinement_->write();
     }
 }
 

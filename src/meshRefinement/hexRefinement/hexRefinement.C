@@ -257,6 +257,20 @@ bool Foam::hexRefinement::unrefine(const labelList& splitPoints)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::hexRefinement::initialise()
+{
+    for (label i = 0; i < maxRefinement_; ++i)
+    {
+        bitSet marked(mesh_.nCells());
+        indicator_.mark(marked);
+        if (!adapt(marked))
+        {
+            break;
+        }
+    }
+}
+
+
 bool Foam::hexRefinement::update()
 {
     const label index = mesh_.time().timeIndex() - startIndex_;
