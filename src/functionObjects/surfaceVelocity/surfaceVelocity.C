@@ -1,4 +1,6 @@
 #include "surfaceVelocity.H"
+#include "boundBox.H"
+#include "mapPolyMesh.H"
 #include "addToRunTimeSelectionTable.H"
 #include <algorithm>
 #include <vector>
@@ -65,7 +67,17 @@ bool Foam::functionObjects::surfaceVelocity::read(const dictionary& dict)
     }
     direction_ /= mag(direction_);
 
-    // The row of cells nearest to the line
+    selectCells();
+    return true;
+}
+
+
+void Foam::functionObjects::surfaceVelocity::selectCells()
+{
+    // The row of cells whose centres lie nearest to the line (on a wedge
+    // the row next to the axis, which lies off it), and the cells whose
+    // bounding box the line meets (within a tolerance): on a refined mesh
+    // the cells the line runs through or along, of whatever size
     const vectorField& C = mesh_.C().primitiveField();
     scalarField dist(C.size());
     scalar nearest = GREAT;
@@ -77,16 +89,52 @@ bool Foam::functionObjects::surfaceVelocity::read(const dictionary& dict)
     }
     reduce(nearest, minOp<scalar>());
     const scalar tol = 1e-9*max(mag(mesh_.bounds().span()), SMALL);
+    const pointField& points = mesh_.points();
+    const labelListList& cellPoints = mesh_.cellPoints();
     DynamicList<label> cells;
-    forAll(C, celli)
+    forAll(cellPoints, celli)
     {
         if (dist[celli] <= nearest + tol)
+        {
+            cells.append(celli);
+            continue;
+        }
+        const boundBox bb(points, cellPoints[celli], false);
+        scalar sMin = -GREAT;
+        scalar sMax = GREAT;
+        bool meets = true;
+        for (Foam::direction i = 0; i < 3 && meets; ++i)
+        {
+            const scalar lo = bb.min()[i] - tol - point_[i];
+            const scalar hi = bb.max()[i] + tol - point_[i];
+            const scalar d = direction_[i];
+            if (mag(d) < SMALL)
+            {
+                meets = lo <= 0 && hi >= 0;
+            }
+            else
+            {
+                sMin = max(sMin, min(lo/d, hi/d));
+                sMax = min(sMax, max(lo/d, hi/d));
+                meets = sMin <= sMax;
+            }
+        }
+        if (meets)
         {
             cells.append(celli);
         }
     }
     cells_ = cells;
-    return true;
+    stale_ = false;
+}
+
+
+void Foam::functionObjects::surfaceVelocity::updateMesh(const mapPolyMesh&)
+{
+    // Called inside the mesh's own update, before its geometry is: the
+    // cells are selected again when next needed
+    cells_.clear();
+    stale_ = true;
 }
 
 
@@ -110,6 +158,11 @@ Foam::functionObjects::surfaceVelocity::surfaceOnLine() const
     const scalarField& alpha = phases().alpha(phase_).primitiveField();
     const vectorField& U = phases().U().primitiveField();
     const vectorField& C = mesh_.C().primitiveField();
+
+    if (stale_)
+    {
+        const_cast<surfaceVelocity&>(*this).selectCells();
+    }
 
     // The line's cells (s, alpha, U), gathered on the master
     List<List<scalar>> lines(Pstream::nProcs());

@@ -28,7 +28,6 @@ Foam::hexRefinement::hexRefinement
     indicator_(phases, dict),
     remap_(phases),
     changedSinceWrite_(false),
-    startIndex_(mesh.time().timeIndex()),
     heat_(0)
 {
     if (maxRefinement_ < 1 || refineInterval_ < 1 || nBufferLayers_ < 0)
@@ -273,7 +272,10 @@ void Foam::hexRefinement::initialise()
 
 bool Foam::hexRefinement::update()
 {
-    const label index = mesh_.time().timeIndex() - startIndex_;
+    // Counted from the run's first step, also across a restart (the index
+    // is written with each time), so that a resumed run changes the mesh
+    // at the steps a straight one does
+    const label index = mesh_.time().timeIndex();
     if (index <= 0 || index % refineInterval_ != 0)
     {
         return false;
