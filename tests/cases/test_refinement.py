@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Adaptive refinement's mapping (docs/numerics.md section 12): a refine /
+"""Adaptive refinement's mapping (docs/numerics.md section 11): a refine /
 unrefine cycle of a 3-D case with two solids, a gas and a shock in it
 conserves every phase's mass, the momentum and the total energy to
 round-off, and brings the state back to itself.
