@@ -36,39 +36,19 @@ Foam::refinementIndicator::refinementIndicator
     if (interfaces_)
     {
         const dictionary& d = dict.subDict("interfaces");
-        checkKeywords(d, {"lower", "upper"}, owner + " interfaces");
         alphaLower_ = inputDefaults::get(d, "lower", alphaLower_, owner);
         alphaUpper_ = inputDefaults::get(d, "upper", alphaUpper_, owner);
-        if (!(0 < alphaLower_ && alphaLower_ < alphaUpper_ && alphaUpper_ < 1))
-        {
-            FatalIOErrorInFunction(d)
-                << "Need 0 < lower (" << alphaLower_ << ") < upper ("
-                << alphaUpper_ << ") < 1" << exit(FatalIOError);
-        }
     }
     if (shocks_)
     {
         const dictionary& d = dict.subDict("shocks");
-        checkKeywords(d, {"jump", "pRef"}, owner + " shocks");
         jump_ = inputDefaults::get(d, "jump", jump_, owner);
         pRef_ = inputDefaults::get(d, "pRef", pRef_, owner);
-        if (!(jump_ > 0) || !(pRef_ >= 0))
-        {
-            FatalIOErrorInFunction(d)
-                << "Need jump > 0 (" << jump_ << ") and pRef >= 0 ("
-                << pRef_ << ")" << exit(FatalIOError);
-        }
     }
     if (plastic_)
     {
         const dictionary& d = dict.subDict("plasticFlow");
-        checkKeywords(d, {"rate"}, owner + " plasticFlow");
         rate_ = inputDefaults::get(d, "rate", rate_, owner);
-        if (!(rate_ > 0))
-        {
-            FatalIOErrorInFunction(d)
-                << "Need rate > 0, not " << rate_ << exit(FatalIOError);
-        }
         bool any = false;
         for (label k = 0; k < phases.size(); ++k)
         {
@@ -83,13 +63,71 @@ Foam::refinementIndicator::refinementIndicator
                 << " strain epsilonP" << exit(FatalIOError);
         }
     }
-    if (!interfaces_ && !shocks_ && !plastic_)
+    store();
+}
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+void Foam::refinementIndicator::checkSettings(const dictionary& dict)
+{
+    const string owner("refinement");
+    for (const word& key : keywords)
+    {
+        if (dict.found(key, keyType::LITERAL) && !dict.isDict(key))
+        {
+            FatalIOErrorInFunction(dict)
+                << "refinement: " << key << " must be a dictionary of its"
+                << " settings, e.g. " << key << " {}" << exit(FatalIOError);
+        }
+    }
+    if (dict.isDict("interfaces"))
+    {
+        const dictionary& d = dict.subDict("interfaces");
+        checkKeywords(d, {"lower", "upper"}, owner + " interfaces");
+        const scalar lower = d.getOrDefault<scalar>("lower", 1e-3);
+        const scalar upper = d.getOrDefault<scalar>("upper", 0.999);
+        if (!(0 < lower && lower < upper && upper < 1))
+        {
+            FatalIOErrorInFunction(d)
+                << "Need 0 < lower (" << lower << ") < upper (" << upper
+                << ") < 1" << exit(FatalIOError);
+        }
+    }
+    if (dict.isDict("shocks"))
+    {
+        const dictionary& d = dict.subDict("shocks");
+        checkKeywords(d, {"jump", "pRef"}, owner + " shocks");
+        const scalar jump = d.getOrDefault<scalar>("jump", 0.1);
+        const scalar pRef = d.getOrDefault<scalar>("pRef", 1e5);
+        if (!(jump > 0) || !(pRef >= 0))
+        {
+            FatalIOErrorInFunction(d)
+                << "Need jump > 0 (" << jump << ") and pRef >= 0 (" << pRef
+                << ")" << exit(FatalIOError);
+        }
+    }
+    if (dict.isDict("plasticFlow"))
+    {
+        const dictionary& d = dict.subDict("plasticFlow");
+        checkKeywords(d, {"rate"}, owner + " plasticFlow");
+        const scalar rate = d.getOrDefault<scalar>("rate", 1e3);
+        if (!(rate > 0))
+        {
+            FatalIOErrorInFunction(d)
+                << "Need rate > 0, not " << rate << exit(FatalIOError);
+        }
+    }
+    if
+    (
+        !dict.found("interfaces") && !dict.found("shocks")
+     && !dict.found("plasticFlow")
+    )
     {
         FatalIOErrorInFunction(dict)
             << "No criterion for refinement: give at least one of "
             << keywords << exit(FatalIOError);
     }
-    store();
 }
 
 
