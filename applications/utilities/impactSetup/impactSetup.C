@@ -152,6 +152,18 @@ int main(int argc, char *argv[])
                 << " see " << runTime.path()/"log.blockMesh"
                 << exit(FatalError);
         }
+
+        // The refinement levels of an earlier refined mesh do not belong
+        // to blockMesh's
+        const fileName meshDir(runTime.path()/runTime.constant()/"polyMesh");
+        for
+        (
+            const word f
+          : {"cellLevel", "pointLevel", "level0Edge", "refinementHistory"}
+        )
+        {
+            rm(meshDir/f);
+        }
     }
     else if (!isFile(runTime.path()/runTime.constant()/"polyMesh"/"faces"))
     {
@@ -173,6 +185,7 @@ int main(int argc, char *argv[])
         )
     );
 
+    problem.refineMesh(mesh);
     problem.setFields(mesh);
     problem.writeOutputs(mesh);
 

@@ -49,7 +49,7 @@ const dictionary& subDict
 const Foam::wordList Foam::impactProblem::keywords
 ({
     "geometry", "domain", "ambient", "bodies", "phaseProperties",
-    "contacts", "outputs"
+    "contacts", "outputs", "refinement"
 });
 
 
@@ -368,6 +368,7 @@ Foam::impactProblem::impactProblem
     resolveMaterials();
     placeBodies();
     readOutputs();
+    readRefinement();
 }
 
 

@@ -116,13 +116,18 @@ void Foam::impactProblem::warnResolution() const
             const scalar hi = min(bb.max()[d], max_[d]);
             smallest = min(smallest, hi - lo);
         }
-        const scalar across = smallest/cellSize_;
+        // Refined at its surface: the finest cells
+        const scalar h =
+            refinement_.empty()
+          ? cellSize_
+          : cellSize_/pow(2.0, refinement_.get<label>("maxRefinement"));
+        const scalar across = smallest/h;
         if (across < 3)
         {
             WarningInFunction
                 << b.owner().c_str() << " is " << across << " cells across"
-                << " its smallest extent (" << smallest << " m at cellSize "
-                << cellSize_ << " m): fewer than 3, too few to resolve it."
+                << " its smallest extent (" << smallest << " m at cells of "
+                << h << " m): fewer than 3, too few to resolve it."
                 << " Lengths are in metres (cellSize 0.25 is 25 cm; 0.25 mm"
                 << " is 0.25e-3)." << endl;
         }

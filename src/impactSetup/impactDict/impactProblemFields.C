@@ -69,6 +69,33 @@ void Foam::impactProblem::writeField
 }
 
 
+Foam::List<Foam::scalarField> Foam::impactProblem::bodyFractions
+(
+    const cutCellFractions& cut
+) const
+{
+    List<scalarField> alpha(bodies_.size());
+    forAll(bodies_, i)
+    {
+        const impactBody& b = bodies_[i];
+        List<vector> n;
+        scalarList d;
+        if (b.polyhedron(n, d))
+        {
+            alpha[i] = cut.fractions(n, d);
+        }
+        else
+        {
+            alpha[i] = cut.fractions
+            (
+                [&b](const point& x) { return b.effectiveDistance(x); }
+            );
+        }
+    }
+    return alpha;
+}
+
+
 void Foam::impactProblem::writePhaseProperties()
 {
     dictionary out;
@@ -147,24 +174,7 @@ void Foam::impactProblem::setFields(const fvMesh& mesh)
     const label nCells = mesh.nCells();
 
     // Each body's fractions
-    List<scalarField> alpha(bodies_.size());
-    forAll(bodies_, i)
-    {
-        const impactBody& b = bodies_[i];
-        List<vector> n;
-        scalarList d;
-        if (b.polyhedron(n, d))
-        {
-            alpha[i] = cut.fractions(n, d);
-        }
-        else
-        {
-            alpha[i] = cut.fractions
-            (
-                [&b](const point& x) { return b.effectiveDistance(x); }
-            );
-        }
-    }
+    List<scalarField> alpha(bodyFractions(cut));
     Info<< "Volume fractions of " << bodies_.size() << " bodies on "
         << nCells << " cells in " << clock.timeIncrement() << " s" << nl
         << endl;
