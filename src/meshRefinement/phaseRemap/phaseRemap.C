@@ -207,7 +207,12 @@ Foam::scalar Foam::phaseRemap::merge(const label c, const labelUList& old)
             phase.p().primitiveFieldRef()[c] = p;
             const scalar eTrace =
                 law.solid() ? law.e(rho, p, toEigen(A)) : law.eos().e(rho, p);
-            unpaid += energy[k] - mass[k]*(eTrace + 0.5*magSqr(U));
+
+            // Its share of the total as any phase's (below), less what
+            // its state holds
+            unpaid +=
+                energy[k] - (mom[k] & U) + mass[k]*magSqr(U)
+              - mass[k]*(eTrace + 0.5*magSqr(U));
         }
         else
         {
