@@ -121,6 +121,16 @@ int main(int argc, char *argv[])
 
     while (runTime.run())
     {
+        // Every refineInterval steps, before the step: the mesh refined
+        // and unrefined, the phase state carried over, the parts brought
+        // to the new mesh. (Before the step, not after the write: a run
+        // resumed from a written time then changes the mesh where a
+        // straight run does)
+        if (refinement && refinement->update())
+        {
+            updateSolverParts(phases, dem, relaxation, voidCells, forces, step);
+        }
+
         // The hyperbolic step and the relaxation, repeated with the failing
         // cells at first order; rejected (false): retried from the same
         // state with a shorter time step. The retries stay inside this
@@ -156,13 +166,7 @@ int main(int argc, char *argv[])
         }
         progress.step();
 
-        // The mesh refined and unrefined every refineInterval steps, the
-        // phase state carried over, the parts brought to the new mesh
-        if (refinement && refinement->update())
-        {
-            updateSolverParts(phases, dem, relaxation, voidCells, forces, step);
-        }
-        else if
+        if
         (
             rebuildInterval > 0
          && (runTime.timeIndex() - runTime.startTimeIndex())
