@@ -135,6 +135,11 @@ void Foam::refinementIndicator::checkSettings(const dictionary& dict)
 
 void Foam::refinementIndicator::markInterfaces(bitSet& cells) const
 {
+    const fvMesh& mesh = phases_.mesh();
+    const labelUList& own = mesh.owner();
+    const labelUList& nei = mesh.neighbour();
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    const label start = mesh.nInternalFaces();
     for (label k = 0; k < phases_.size(); ++k)
     {
         const scalarField& alpha = phases_.alpha(k).primitiveField();
@@ -143,6 +148,35 @@ void Foam::refinementIndicator::markInterfaces(bitSet& cells) const
             if (alpha[c] > alphaLower_ && alpha[c] < alphaUpper_)
             {
                 cells.set(c);
+            }
+        }
+
+        // A sharp interface on a face (fractions of 0 and 1 on its sides,
+        // as setFields writes them)
+        forAll(nei, f)
+        {
+            if (mag(alpha[own[f]] - alpha[nei[f]]) > 0.5)
+            {
+                cells.set(own[f]);
+                cells.set(nei[f]);
+            }
+        }
+        scalarField alphaNbr;
+        syncTools::swapBoundaryCellList(mesh, alpha, alphaNbr);
+        forAll(patches, patchi)
+        {
+            const polyPatch& pp = patches[patchi];
+            if (!pp.coupled())
+            {
+                continue;
+            }
+            forAll(pp, i)
+            {
+                const label f = pp.start() + i;
+                if (mag(alpha[own[f]] - alphaNbr[f - start]) > 0.5)
+                {
+                    cells.set(own[f]);
+                }
             }
         }
     }
