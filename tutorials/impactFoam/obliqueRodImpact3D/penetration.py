@@ -5,8 +5,13 @@ tutorial, at every write time.
 Reads alpha.steel, alpha.copper, rho.copper and U of each time directory
 (ascii, reconstructed) on the single block of system/blockMeshDict: x in
 [-8, 14] mm, y in [0, 8] mm (the symmetry plane y = 0), z in [-12, 12] mm,
-nx x ny x nz cells from system/meshSize, x fastest. The plate's top face is
-x = 0. At each time it measures:
+nx x ny x nz cells from system/meshSize, x fastest. A refined mesh (./Allrun
+-refine: cells of the block split into eight, 2^refine times at most) is
+read with each time's cell centres and volumes (C and V, which Allrun
+writes with postProcess) and sampled on the finest cells: each cell's
+values fill the finest cells it covers, so that the measures below are
+those of a uniform mesh of the finest cells holding the same values. The
+plate's top face is x = 0. At each time it measures:
   depth   the crater's depth below x = 0: in every column of cells along x,
           scanning down from x = 0 to where alpha.steel rises through 1/2
           (linear between cell centres); the deepest column;
@@ -39,6 +44,8 @@ def field(path, n, width=1):
     kind = "scalar" if width == 1 else "vector"
     m = re.search(r"internalField\s+nonuniform\s+List<%s>\s*(\d+)\s*\(" % kind,
                   text)
+    if n is None:
+        n = int(m.group(1))
     if m is None:
         v = re.search(r"internalField\s+uniform\s+([^;]+);", text).group(1)
         values = np.array(v.strip("() ").split(), float)
@@ -48,6 +55,41 @@ def field(path, n, width=1):
         return np.array(body.split(")")[0].split(), float)
     values = re.findall(r"\(([^()]*)\)", body[:body.index("\n)")])
     return np.array([v.split() for v in values[:n]], float)
+
+
+def refine_levels():
+    """Allrun's -refine (0: the block's cells)"""
+    path = os.path.join(HERE, "constant", "refinementProperties")
+    return int(entry(path, "maxRefinement")) if os.path.exists(path) else 0
+
+
+def sample(d, names, n, h):
+    """The fields names (name, width) of time directory d on a refined mesh
+    (its C and V) as arrays on the finest uniform grid n (cells of size h,
+    x fastest): each cell fills the finest cells it covers"""
+    V = field(os.path.join(d, "V"), None)
+    count = len(V)
+    C = field(os.path.join(d, "C"), count, 3) * 1e3          # mm
+    side = np.cbrt(V) * 1e3
+    k = np.rint(side / h[0]).astype(int)                     # cells per side
+    start = np.rint((C - 0.5 * side[:, None] - LO) / h).astype(int)
+    out = {}
+    values = {name: field(os.path.join(d, name), count, width)
+              for name, width in names}
+    for name, width in names:
+        out[name] = np.zeros((n[2], n[1], n[0]) + ((width,) if width > 1
+                                                   else ()))
+    for size in np.unique(k):
+        cells = np.nonzero(k == size)[0]
+        for di in range(size):
+            for dj in range(size):
+                for dk in range(size):
+                    ix = start[cells, 0] + di
+                    iy = start[cells, 1] + dj
+                    iz = start[cells, 2] + dk
+                    for name, _ in names:
+                        out[name][iz, iy, ix] = values[name][cells]
+    return out
 
 
 def crater_depth(steel, x):
@@ -71,7 +113,9 @@ def crater_depth(steel, x):
 
 def main():
     size = os.path.join(HERE, "system", "meshSize")
-    n = np.array([int(entry(size, k)) for k in ("nx", "ny", "nz")])
+    levels = refine_levels()
+    n = np.array([int(entry(size, k)) for k in ("nx", "ny", "nz")]) \
+        * 2 ** levels
     h = (HI - LO) / n
     centres = [LO[d] + (np.arange(n[d]) + 0.5) * h[d] for d in range(3)]
     x = centres[0]
@@ -89,10 +133,17 @@ def main():
         d = os.path.join(HERE, t)
         if not os.path.exists(os.path.join(d, "alpha.steel")):
             continue
-        steel = field(os.path.join(d, "alpha.steel"), nCells)
-        mass = (field(os.path.join(d, "alpha.copper"), nCells)
-                * field(os.path.join(d, "rho.copper"), nCells) * vol)
-        U = field(os.path.join(d, "U"), nCells, 3)
+        if levels:
+            f = sample(d, [("alpha.steel", 1), ("alpha.copper", 1),
+                           ("rho.copper", 1), ("U", 3)], n, h)
+            steel = f["alpha.steel"].ravel()
+            mass = f["alpha.copper"].ravel() * f["rho.copper"].ravel() * vol
+            U = f["U"].reshape(-1, 3)
+        else:
+            steel = field(os.path.join(d, "alpha.steel"), nCells)
+            mass = (field(os.path.join(d, "alpha.copper"), nCells)
+                    * field(os.path.join(d, "rho.copper"), nCells) * vol)
+            U = field(os.path.join(d, "U"), nCells, 3)
         m = mass.sum()
         centre = (mass[:, None] * pos).sum(axis=0) / m
         u = (mass[:, None] * U).sum(axis=0) / m
