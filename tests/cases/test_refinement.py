@@ -30,8 +30,9 @@ Decides:
   parallel       the same on 2 processes: the same cells after every
                  change and the same sums within 1e-12;
   restart        the refined state written (-write) holds the mesh and
-                 the levels in its time's polyMesh, and impactFoam runs
-                 on from it;
+                 the levels in its time's polyMesh, impactPlot draws it
+                 and the time before on their own meshes, and impactFoam
+                 runs on from it;
   bad input      refinement on an axisymmetric wedge, a misspelled entry,
                  no criterion: each stops with an error naming it;
   impactSetup    impactDict's refinement: the rod's volume on the mesh
@@ -45,6 +46,7 @@ About 40 s.
 import os
 import re
 import shutil
+import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -361,6 +363,19 @@ def main():
                  "time %s holds the refined mesh and its levels: %s; the "
                  "mesh has %s cells, alpha.rod %s, the refined state %s"
                  % (t, have, mesh_n, field_n, refined))
+    # impactPlot draws each time on its own mesh
+    plot = os.path.join(HERE, "..", "..", "applications", "utilities",
+                        "impactPlot", "impactPlot")
+    proc = subprocess.run([sys.executable, plot, "-case", case, "-time",
+                           "2e-06,%s" % t], stdout=subprocess.PIPE,
+                          stderr=subprocess.STDOUT, universal_newlines=True)
+    pngs = [os.path.join(case, "postProcessing", "impactPlot",
+                         "materials_%s.png" % x) for x in ("2e-06", t)]
+    checks.check("refinement_impactPlot",
+                 proc.returncode == 0 and all(map(os.path.isfile, pngs)),
+                 "impactPlot draws the base mesh's time 2e-06 and the "
+                 "refined time %s: %s" % (t, "yes" if proc.returncode == 0
+                                          else proc.stdout[-300:]))
     os.remove(os.path.join(case, "constant", "refinementProperties"))
     log = fc.run(case, ["impactFoam", "-endTime", "2.2e-6"],
                  log="log.impactFoam.restart", check=False)
