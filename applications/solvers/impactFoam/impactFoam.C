@@ -119,6 +119,11 @@ int main(int argc, char *argv[])
 
     Info<< "\nStarting time loop\n" << endl;
 
+    // The changes of the mesh and the time they took (choosing the cells,
+    // changing the mesh, carrying the state, rebuilding the parts)
+    label nMeshChanges = 0;
+    scalar refinementTime = 0;
+
     while (runTime.run())
     {
         // Every refineInterval steps, before the step: the mesh refined
@@ -126,9 +131,18 @@ int main(int argc, char *argv[])
         // to the new mesh. (Before the step, not after the write: a run
         // resumed from a written time then changes the mesh where a
         // straight run does)
-        if (refinement && refinement->update())
+        if (refinement)
         {
-            updateSolverParts(phases, dem, relaxation, voidCells, forces, step);
+            const scalar t0 = runTime.elapsedCpuTime();
+            if (refinement->update())
+            {
+                updateSolverParts
+                (
+                    phases, dem, relaxation, voidCells, forces, step
+                );
+                ++nMeshChanges;
+            }
+            refinementTime += runTime.elapsedCpuTime() - t0;
         }
 
         // The hyperbolic step and the relaxation, repeated with the failing
@@ -185,6 +199,13 @@ int main(int argc, char *argv[])
     }
 
     dem.fallback().report();
+    if (refinement)
+    {
+        Info<< "Refinement: " << nMeshChanges << " changes of the mesh, "
+            << mesh.globalData().nTotalCells() << " cells at the end; "
+            << refinementTime << " s of the run's " << runTime.elapsedCpuTime()
+            << " s CPU time in the changes" << nl << endl;
+    }
     progress.summary(report.unpaidEnergy());
     runTime.printExecutionTime(Info);
 
