@@ -133,13 +133,56 @@ void Foam::refinementIndicator::checkSettings(const dictionary& dict)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::refinementIndicator::markInterfaces(bitSet& cells) const
+template<class Jump>
+void Foam::refinementIndicator::markJumps
+(
+    const scalarField& v,
+    const Jump& jumps,
+    bitSet& cells
+) const
 {
     const fvMesh& mesh = phases_.mesh();
     const labelUList& own = mesh.owner();
     const labelUList& nei = mesh.neighbour();
-    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    forAll(nei, f)
+    {
+        if (jumps(v[own[f]], v[nei[f]]))
+        {
+            cells.set(own[f]);
+            cells.set(nei[f]);
+        }
+    }
+
+    // Across processor boundaries: the other side's values
+    scalarField vNbr;
+    syncTools::swapBoundaryCellList(mesh, v, vNbr);
     const label start = mesh.nInternalFaces();
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        if (!pp.coupled())
+        {
+            continue;
+        }
+        forAll(pp, i)
+        {
+            const label f = pp.start() + i;
+            if (jumps(v[own[f]], vNbr[f - start]))
+            {
+                cells.set(own[f]);
+            }
+        }
+    }
+}
+
+
+void Foam::refinementIndicator::markInterfaces(bitSet& cells) const
+{
+    // A sharp interface on a face: fractions of 0 and 1 on its sides, as
+    // setFields writes them
+    const auto sharp = [](const scalar a1, const scalar a2)
+    {
+        return mag(a1 - a2) > 0.5;
+    };
     for (label k = 0; k < phases_.size(); ++k)
     {
         const scalarField& alpha = phases_.alpha(k).primitiveField();
@@ -150,43 +193,14 @@ void Foam::refinementIndicator::markInterfaces(bitSet& cells) const
                 cells.set(c);
             }
         }
-
-        // A sharp interface on a face (fractions of 0 and 1 on its sides,
-        // as setFields writes them)
-        forAll(nei, f)
-        {
-            if (mag(alpha[own[f]] - alpha[nei[f]]) > 0.5)
-            {
-                cells.set(own[f]);
-                cells.set(nei[f]);
-            }
-        }
-        scalarField alphaNbr;
-        syncTools::swapBoundaryCellList(mesh, alpha, alphaNbr);
-        forAll(patches, patchi)
-        {
-            const polyPatch& pp = patches[patchi];
-            if (!pp.coupled())
-            {
-                continue;
-            }
-            forAll(pp, i)
-            {
-                const label f = pp.start() + i;
-                if (mag(alpha[own[f]] - alphaNbr[f - start]) > 0.5)
-                {
-                    cells.set(own[f]);
-                }
-            }
-        }
+        markJumps(alpha, sharp, cells);
     }
 }
 
 
 void Foam::refinementIndicator::markShocks(bitSet& cells) const
 {
-    const fvMesh& mesh = phases_.mesh();
-    const label nCells = mesh.nCells();
+    const label nCells = phases_.mesh().nCells();
 
     // The mixture's density and pressure
     scalarField rho(nCells, Zero);
@@ -203,51 +217,25 @@ void Foam::refinementIndicator::markShocks(bitSet& cells) const
         }
     }
 
-    const auto jumps = [this](scalar r1, scalar r2, scalar p1, scalar p2)
-    {
-        const scalar rMax = max(r1, r2);
-        return
-            (rMax > 0 && mag(r1 - r2) > jump_*rMax)
-         || mag(p1 - p2) > jump_*(max(mag(p1), mag(p2)) + pRef_);
-    };
-
-    const labelUList& own = mesh.owner();
-    const labelUList& nei = mesh.neighbour();
-    forAll(nei, f)
-    {
-        const label o = own[f];
-        const label n = nei[f];
-        if (jumps(rho[o], rho[n], p[o], p[n]))
+    markJumps
+    (
+        rho,
+        [this](const scalar r1, const scalar r2)
         {
-            cells.set(o);
-            cells.set(n);
-        }
-    }
-
-    // Across processor boundaries: the other side's values
-    scalarField rhoNbr;
-    scalarField pNbr;
-    syncTools::swapBoundaryCellList(mesh, rho, rhoNbr);
-    syncTools::swapBoundaryCellList(mesh, p, pNbr);
-    const polyBoundaryMesh& patches = mesh.boundaryMesh();
-    const label start = mesh.nInternalFaces();
-    forAll(patches, patchi)
-    {
-        const polyPatch& pp = patches[patchi];
-        if (!pp.coupled())
+            const scalar rMax = max(r1, r2);
+            return rMax > 0 && mag(r1 - r2) > jump_*rMax;
+        },
+        cells
+    );
+    markJumps
+    (
+        p,
+        [this](const scalar p1, const scalar p2)
         {
-            continue;
-        }
-        forAll(pp, i)
-        {
-            const label f = pp.start() + i;
-            const label o = own[f];
-            if (jumps(rho[o], rhoNbr[f - start], p[o], pNbr[f - start]))
-            {
-                cells.set(o);
-            }
-        }
-    }
+            return mag(p1 - p2) > jump_*(max(mag(p1), mag(p2)) + pRef_);
+        },
+        cells
+    );
 }
 
 
