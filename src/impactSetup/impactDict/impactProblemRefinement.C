@@ -10,7 +10,7 @@ Description
 
 #include "impactProblem.H"
 #include "hexRefinement.H"
-#include "hexCutter.H"
+#include "amrCutter.H"
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
@@ -27,13 +27,6 @@ void Foam::impactProblem::readRefinement()
             << " and the criteria; docs/impactSetup.md)" << exit(FatalIOError);
     }
     refinement_ = dict_.subDict("refinement");
-    if (geometry_ != "threeD")
-    {
-        FatalIOErrorInFunction(dict_.subDict("refinement"))
-            << "impactDict: refinement is for geometry threeD, not "
-            << geometry_ << " (a planar or axisymmetric mesh would be split"
-            << " across its plane)" << exit(FatalIOError);
-    }
     if (!hasDomain_)
     {
         FatalIOErrorInFunction(dict_.subDict("refinement"))
@@ -82,7 +75,7 @@ void Foam::impactProblem::refineMesh(fvMesh& mesh)
 
     // Refine where a body's surface is, the exact fractions computed anew
     // on each refined mesh
-    hexCutter cutter(mesh);
+    autoPtr<amrCutter> cutter(amrCutter::New(mesh));
     for (label level = 0; level < maxLevel; ++level)
     {
         const cutCellFractions cut(mesh, geometry_);
@@ -98,20 +91,20 @@ void Foam::impactProblem::refineMesh(fvMesh& mesh)
                 }
             }
         }
-        cutter.extend(marked, nLayers);
-        if (!cutter.refine(marked, maxLevel, maxCells, nullptr))
+        cutter->extend(marked, nLayers);
+        if (!cutter->refine(marked, maxLevel, maxCells, nullptr))
         {
             break;
         }
         Info<< "Refined at the bodies' surfaces: "
             << mesh.globalData().nTotalCells() << " cells, per level "
-            << cutter.perLevel(maxLevel) << nl << endl;
+            << cutter->perLevel(maxLevel) << nl << endl;
     }
 
     // The refined mesh and its levels replace blockMesh's
-    cutter.setInstance(runTime_.constant());
+    cutter->setInstance(runTime_.constant());
     mesh.write();
-    cutter.write(true);
+    cutter->write(true);
 
     // The settings for the solver
     autoPtr<OFstream> os(files_.open(props));

@@ -9,7 +9,7 @@
 
 Foam::hexCutter::hexCutter(fvMesh& mesh)
 :
-    mesh_(mesh),
+    amrCutter(mesh),
     cutter_(mesh, true),
     protected_(mesh.nCells()),
     changedSinceWrite_(false)
@@ -133,41 +133,6 @@ Foam::autoPtr<Foam::mapPolyMesh> Foam::hexCutter::change
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::labelList Foam::hexCutter::perLevel(const label maxLevel) const
-{
-    labelList n(maxLevel + 1, Zero);
-    for (const label l : cutter_.cellLevel())
-    {
-        ++n[min(l, maxLevel)];
-    }
-    Pstream::listCombineGather(n, plusEqOp<label>());
-    Pstream::listCombineScatter(n);
-    return n;
-}
-
-
-void Foam::hexCutter::extend(bitSet& marked, const label n) const
-{
-    for (label layer = 0; layer < n; ++layer)
-    {
-        bitSet faces(mesh_.nFaces());
-        for (const label c : marked)
-        {
-            faces.set(mesh_.cells()[c]);
-        }
-        syncTools::syncFaceList(mesh_, faces, orEqOp<unsigned int>());
-        for (const label f : faces)
-        {
-            marked.set(mesh_.faceOwner()[f]);
-            if (f < mesh_.nInternalFaces())
-            {
-                marked.set(mesh_.faceNeighbour()[f]);
-            }
-        }
-    }
-}
-
 
 bool Foam::hexCutter::refine
 (

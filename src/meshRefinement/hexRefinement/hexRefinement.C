@@ -35,7 +35,7 @@ Foam::hexRefinement::hexRefinement
         inputDefaults::get<label>(dict, "nBufferLayers", 2, "refinement")
     ),
     unrefine_(inputDefaults::get<bool>(dict, "unrefine", true, "refinement")),
-    cutter_(mesh),
+    cutter_(amrCutter::New(mesh)),
     indicator_(phases, dict),
     remap_(phases),
     heat_(0)
@@ -156,10 +156,10 @@ bool Foam::hexRefinement::adapt(bitSet marked)
     const label nOld = mesh_.globalData().nTotalCells();
 
     marked.resize(mesh_.nCells());
-    cutter_.extend(marked, nBufferLayers_);
+    cutter_->extend(marked, nBufferLayers_);
     const bool refined =
-        cutter_.refine(marked, maxRefinement_, maxCells_, this);
-    const bool unrefined = unrefine_ && cutter_.unrefine(marked, this);
+        cutter_->refine(marked, maxRefinement_, maxCells_, this);
+    const bool unrefined = unrefine_ && cutter_->unrefine(marked, this);
 
     // The plastic strains of the current mesh and time, for the next
     // evaluation's rates
@@ -171,7 +171,7 @@ bool Foam::hexRefinement::adapt(bitSet marked)
     }
 
     Info<< "Refinement: " << nOld << " -> " << mesh_.globalData().nTotalCells()
-        << " cells, per level " << cutter_.perLevel(maxRefinement_)
+        << " cells, per level " << cutter_->perLevel(maxRefinement_)
         << "; kinetic energy to heat in merged cells " << heat_ << " J"
         << endl;
     return true;
