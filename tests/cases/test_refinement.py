@@ -1,12 +1,14 @@
 #!/usr/bin/python3
 """Adaptive refinement's mapping (docs/numerics.md section 11): a refine /
-unrefine cycle of a 3-D case with two solids, a gas and a shock in it
+unrefine cycle of a case with two solids, a gas and a shock in it
 conserves every phase's mass, the momentum and the total energy to
-round-off, and brings the state back to itself.
+round-off, and brings the state back to itself, in 3-D (hexCutter) and on
+an axisymmetric wedge (quadCutter).
 
-The case: the projectileOnPlate template in 3-D (a quarter: symmetry planes
-y = 0 and z = 0, 2 mm cells, 720 cells), run 2 us past the impact so that
-a shock runs through the plate and the rod. tests/tools/refinementCheck
+The cases: the projectileOnPlate template in 3-D (a quarter: symmetry
+planes y = 0 and z = 0, 2 mm cells, 720 cells) and as it is, axisymmetric
+(1 mm cells, 1400), each run 2 us past the impact so that a shock runs
+through the plate and the rod. tests/tools/refinementCheck
 reads it with constant/refinementProperties (interfaces and shocks, two
 levels, one buffer layer), refines twice where the criteria mark cells,
 unrefines with nothing marked until the mesh is the base mesh again, and
@@ -17,14 +19,15 @@ largest difference of the state from the start (roundTrip: U, each
 phase's alpha, rho, e over its largest c^2, cobasis and carried variables,
 each relative to its largest magnitude).
 
-Decides:
+Decides, for each (refinement_* in 3-D, refinement_wedge* on the wedge):
   conservation   every phase's mass and the total energy within 1e-12
                  relative of the start after every change, the momentum
                  within 1e-12 of its magnitude (measured: 1e-14, 4e-13,
                  2e-14);
   levels         both levels reached, and the base mesh again at the end;
-  round trip     roundTrip <= 1e-12 (measured 5e-15): the children copy
-                 their parent, a merged cell of eight copies is the cell;
+  round trip     roundTrip <= 1e-12 (measured 5e-15, wedge 4.7e-15): the
+                 children copy their parent, a merged cell of eight (four)
+                 copies is the cell;
   heat           the kinetic energy turned into heat >= -1e-12 of the
                  total energy (merging never creates kinetic energy);
   parallel       the same on 2 processes: the same cells after every
@@ -33,15 +36,19 @@ Decides:
                  the levels in its time's polyMesh, impactPlot draws it
                  and the time before on their own meshes, and impactFoam
                  runs on from it;
-  bad input      refinement on an axisymmetric wedge, a misspelled entry,
-                 no criterion: each stops with an error naming it;
+  bad input      a misspelled entry, no criterion, a value out of range,
+                 refinement of a 1-D mesh: each stops with an error naming
+                 it;
   impactSetup    impactDict's refinement: the rod's volume on the mesh
                  refined at the surfaces within 1e-3 of the exact one and
                  nearer than on the base mesh; every cell a surface crosses
                  at the finest level; constant/refinementProperties written
-                 (and removed with the levels when the entry goes); an
-                 axisymmetric geometry refused.
-About 40 s.
+                 (and removed with the levels when the entry goes); the
+                 same on the axisymmetric template (1.5 mm cells, whose
+                 surfaces do not lie on cell faces): both bodies' volumes
+                 within 1e-3, every cell a surface crosses at the finest
+                 level.
+About 60 s.
 """
 import os
 import re
@@ -81,12 +88,16 @@ LINE = re.compile(r"^cells (\d+) mass (.*) momentum (\S+) (\S+) (\S+) "
                   r"energy (\S+) heat (\S+)$", re.M)
 
 
-def make_case(name):
+# The template as it is (axisymmetric) at 1 mm cells
+WEDGE = [("cellSize    0.25e-3;", "cellSize    1e-3;")]
+
+
+def make_case(name, changes=QUARTER):
     case = fc.copy_tutorial(TEMPLATE, name)
     path = os.path.join(case, "system", "impactDict")
     with open(path) as f:
         text = f.read()
-    for old, new in QUARTER:
+    for old, new in changes:
         if old not in text:
             raise fc.FoamError("template impactDict: no %r" % old)
         text = text.replace(old, new, 1)
@@ -196,22 +207,20 @@ def bad_input(checks, case):
     with open(props, "w") as f:
         f.write(PROPERTIES)
 
-    wedge = fc.copy_tutorial(TEMPLATE, "refinement_wedge")
-    path = os.path.join(wedge, "system", "impactDict")
-    with open(path) as f:
-        text = f.read()
-    with open(path, "w") as f:
-        f.write(text.replace("cellSize    0.25e-3;", "cellSize    2e-3;"))
-    fc.run(wedge, ["impactSetup"])
-    with open(os.path.join(wedge, "constant", "refinementProperties"),
+    # A 1-D mesh (empty in two directions) is not refined
+    line = fc.copy_tutorial("waterAirShockTube", "refinement_line")
+    fc.run(line, ["blockMesh"])
+    shutil.copytree(os.path.join(line, "0.orig"), os.path.join(line, "0"))
+    fc.run(line, ["setFields"])
+    with open(os.path.join(line, "constant", "refinementProperties"),
               "w") as f:
         f.write(PROPERTIES)
-    log = fc.run(wedge, ["refinementCheck"], check=False)
+    log = fc.run(line, ["refinementCheck"], check=False)
     out = open(log).read()
-    ok = "FOAM FATAL" in out and "wedge" in out and "3-D" in out
-    checks.check("refinement_badInput_wedge", ok,
-                 "an axisymmetric mesh refused, naming its wedge patch: %s"
-                 % ok)
+    ok = "FOAM FATAL" in out and "1-D mesh" in out
+    checks.check("refinement_badInput_line", ok,
+                 "refinement of the 1-D shock tube refused, naming a 1-D "
+                 "mesh: %s" % ok)
 
 
 SETUP_REFINEMENT = """
@@ -298,18 +307,74 @@ def setup_refinement(checks):
                  "impactSetup rerun without refinement: refinementProperties "
                  "and cellLevel removed: %s" % gone)
 
-    # Errors: not in 3-D, and without a domain
-    wedge_text = open(os.path.join(fc.tutorial_path(TEMPLATE), "system",
-                                   "impactDict")).read()
-    with open(path, "w") as f:
-        f.write(wedge_text + SETUP_REFINEMENT)
-    log = fc.run(case, ["impactSetup"], log="log.impactSetup.wedge",
+    # Axisymmetric: the template at 1.5 mm cells, refined twice
+    wedge = fc.copy_tutorial(TEMPLATE, "refinement_setupWedge")
+    wpath = os.path.join(wedge, "system", "impactDict")
+    with open(wpath) as f:
+        wtext = f.read()
+    with open(wpath, "w") as f:
+        f.write(wtext.replace("cellSize    0.25e-3;", "cellSize    1.5e-3;")
+                + SETUP_REFINEMENT)
+    log = fc.run(wedge, ["impactSetup"])
+    errors = []
+    for body in ("rod", "plate"):
+        m = re.search(r"Body %s:.*?volume on the mesh (\S+), exact (\S+)"
+                      % body, open(log).read(), re.S)
+        errors.append(abs(float(m.group(1)) / float(m.group(2)) - 1)
+                      if m else 1.0)
+    level_file = os.path.join(wedge, "constant", "polyMesh", "cellLevel")
+    coarse = -1
+    if os.path.isfile(level_file):
+        m = re.search(r"\n(\d+)\s*\n\(\s*\n([\s\d]*?)\)",
+                      open(level_file).read())
+        levels = [int(v) for v in m.group(2).split()] if m else []
+        alphas = [fc.read_field(wedge, "0", "alpha." + p) for p in
+                  ("rod", "plate")]
+        if len(levels) == len(alphas[0]):
+            coarse = sum(1 for c, lv in enumerate(levels) if lv < 2 and
+                         any(1e-3 < a[c] < 0.999 for a in alphas))
+    checks.check(
+        "refinement_setup_axisymmetric",
+        max(errors) <= 1e-3 and coarse == 0,
+        "the axisymmetric template refined at its surfaces: the rod's and "
+        "the plate's volumes against the exact ones %.2g, %.2g (bound "
+        "1e-3); cells holding a surface below the finest level: %d (must "
+        "be 0)" % (errors[0], errors[1], coarse))
+
+def wedge_cycle(checks):
+    """The cycle on the axisymmetric template, serial and on 2 processes"""
+    case = make_case("refinement_wedge", WEDGE)
+    parallel = os.path.join(fc.RUN_DIR, "refinement_wedgeParallel")
+    if os.path.lexists(parallel):
+        shutil.rmtree(parallel)
+    shutil.copytree(case, parallel)
+    rows, rt, levels = parse(fc.run(case, ["refinementCheck", "-write"]))
+    check_cycle(checks, "refinement_wedge", rows, rt, levels)
+
+    fc.write_decompose_dict(parallel, 2)
+    fc.run(parallel, ["decomposePar", "-force", "-latestTime"])
+    prow, prt, plevels = parse(fc.run(
+        parallel, "mpirun -np 2 --oversubscribe refinementCheck -parallel",
+        log="log.refinementCheck.parallel"))
+    check_cycle(checks, "refinement_wedgeParallel", prow, prt, plevels)
+    same = len(prow) == len(rows) and all(
+        a["cells"] == b["cells"]
+        and abs(a["energy"] - b["energy"]) <= 1e-12 * b["energy"]
+        and all(abs(x - y) <= 1e-12 * y for x, y in zip(a["mass"], b["mass"]))
+        for a, b in zip(prow, rows))
+    checks.check("refinement_wedgeSerialParallel", same,
+                 "the wedge on 2 processes against serial: cells %s and %s, "
+                 "the sums within 1e-12" % ([r["cells"] for r in prow],
+                                            [r["cells"] for r in rows]))
+
+    # The written refined mesh is a valid mesh
+    t = fc.latest_time(case)
+    log = fc.run(case, ["checkMesh", "-time", t], log="log.checkMesh",
                  check=False)
-    out = open(log).read()
-    ok = "FOAM FATAL" in out and "refinement is for geometry threeD" in out
-    checks.check("refinement_setup_axisymmetric", ok,
-                 "refinement with geometry axisymmetric stops naming it: %s"
-                 % ok)
+    ok = "Mesh OK." in open(log).read()
+    checks.check("refinement_wedgeMesh", ok,
+                 "checkMesh on the refined wedge at %s: %s"
+                 % (t, "Mesh OK" if ok else fc.tail(log)))
 
 
 def main():
@@ -385,6 +450,7 @@ def main():
                  "impactFoam on from the refined state %s to 2.2 us: %s"
                  % (t, "ran" if "FOAM FATAL" not in out else fc.tail(log)))
 
+    wedge_cycle(checks)
     bad_input(checks, parallel)
     setup_refinement(checks)
     checks.exit()

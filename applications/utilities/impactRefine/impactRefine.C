@@ -5,8 +5,8 @@ Application
     impactRefine
 
 Description
-    Refine a 3-D case's mesh where its fields mark cells, before a run
-    (docs/numerics.md section 11.3): constant/refinementProperties'
+    Refine a case's mesh where its fields mark cells, before a run
+    (docs/numerics.md section 11.4): constant/refinementProperties'
     criteria, maxRefinement passes as the solver makes at the start, the
     phase state carried over (phaseRemap). The refined mesh with its
     levels and the fields are written at the start time, over the fields
