@@ -18,24 +18,10 @@ Checks
   refinementRun_conservation  from the "Initial totals" line (after the
                               start's refinement) to every "totals" line:
                               mass within 2e-13 relative, E - E0 - unpaid
-                              within 2e-12 of E0. Measured with the library
-                              at the time of writing: mass 5.4e-14, energy
-                              1.5e-10: FAILS. The energy is lost in the
-                              merges where a phase is a trace of the
-                              merged cell (phaseRemap::merge): it gains
-                              2.4e-7 J in one change of 2.8 us (0.047 J of
-                              kinetic energy to heat) and 0 (3e-11) when
-                              the same change is made with alphaTrace
-                              1.1e-8 (3e-6 J with alphaTrace 1e-4). The
-                              trace is paid its whole energy E_t at the
-                              merged velocity U while the other phases'
-                              heating, E_k - m_k u_k.U + m_k |U|^2,
-                              balances only when summed over all phases:
-                              the total gains sum_traces m_t (u_t - U).U.
-                              Round-off with refinement: 6.6e-13 with
-                              alphaTrace 1.1e-8 (only floored phases
-                              then take that path), from about 2.5e-14
-                              per step on 10000-19000 cells.
+                              within 2e-12 of E0 (measured: mass 5.4e-14,
+                              energy 7.2e-13; merges where a phase is a
+                              trace charge the trace's energy to the
+                              heaviest phase, phaseRemap)
   refinementRun_uniform       the same case without refinement (720 cells):
                               the same bounds (measured: mass 1.6e-14,
                               energy 6.5e-14)
@@ -45,25 +31,19 @@ Checks
                               latestTime) to 3 us: every column of every
                               time history equal to the straight run's
                               within 1e-9 of the column's largest
-                              magnitude (a wall force's components: of
-                              the largest of the three), the changes from
+                              magnitude (a vector's components: of the
+                              largest of the three; a wall force's: of the
+                              table's largest force), the changes from
                               2 us on the same (cells before, after, per
                               level), the same cells at 3 us. Measured:
-                              1.1e-12, 17 changes the same, 19088 cells
+                              1.2e-12, 17 changes the same, 19088 cells
   refinementRun_restartAtChange  the same with the run written every 20
                               steps (timePrecision 17, so that the time
                               names are exact) to 1 us, stopped at step 40:
-                              a step that changes the mesh after its
-                              fields are written. Measured: FAILS. The
-                              resumed run does not make the change of
-                              step 40 (the straight run's 10408 -> 11227
-                              cells): its first change is step 45's,
-                              10408 -> 11948, and the meshes differ from
-                              there on (14622 and 14594 cells at 1 us;
-                              the wall forces 1e-4 of their largest):
-                              impactFoam refines after the write of a
-                              step, and a resumed run starts from that
-                              write without the change
+                              a step whose change of the mesh comes
+                              before the step, after the write: the
+                              resumed run makes it too. Measured 1.6e-10,
+                              7 changes the same, 14622 cells at 1 us
   refinementRun_parallel      2 processes (decomposePar, simple along x)
                               to 3 us: the same changes (cells before and
                               after, cells per level) as the serial run's,
@@ -80,8 +60,13 @@ Checks
                               within 20 %. Measured: 1.596e-8 and
                               1.657e-8 s, ratio 0.963; the 2 mm mesh's
                               6.25e-8 s, 3.9 times the refined run's
-About 105 s on 2 cores (the serial run 38 s, the resumed 19 s, the
-parallel 32 s).
+  refinementRun_wedge*        the same on the template as it is, an
+                              axisymmetric wedge closed by walls (1 mm
+                              cells, two levels: quadCutter):
+                              conservation with changes both ways (same
+                              bounds), checkMesh on the last mesh, resumed
+                              at 2 us, 2 processes
+About 170 s on 2 cores.
 """
 import os
 import re
@@ -116,6 +101,14 @@ PARALLEL_ENERGY_TOL = 2e-12
 DT_TOL = 0.2
 N_DT = 3
 
+# The template as it is (axisymmetric), closed: walls at xMax and yMax
+WEDGE = [
+    ("cellSize    0.25e-3;", "cellSize    %g;"),
+    ("        xMax    open;", "        xMax    wall;"),
+    ("        yMax    open;", "        yMax    wall;"),
+]
+WEDGE_CELL = 1e-3
+
 # A closed quarter: symmetry at y = 0 and z = 0, walls elsewhere
 QUARTER = [
     ("geometry    axisymmetric;", "geometry    threeD;"),
@@ -148,14 +141,15 @@ STEP = re.compile(r"^Time = (\S+)  deltaT = (\S+)", re.M)
 checks = Checks()
 
 
-def make_case(name, cell_size, refine):
-    """The closed quarter set up (impactSetup) on cells of cell_size, with
-    or without constant/refinementProperties; fields with 17 digits"""
+def make_case(name, cell_size, refine, changes=QUARTER):
+    """The closed quarter (or wedge) set up (impactSetup) on cells of
+    cell_size, with or without constant/refinementProperties; fields with
+    17 digits"""
     case = fc.copy_tutorial(TEMPLATE, name, run_dir=RUN)
     path = os.path.join(case, "system", "impactDict")
     with open(path) as f:
         text = f.read()
-    for old, new in QUARTER:
+    for old, new in changes:
         if old not in text:
             raise fc.FoamError("template impactDict: no %r" % old)
         text = text.replace(old, new % cell_size if "%g" in new else new, 1)
@@ -247,15 +241,18 @@ def cut_tables(case, t_end):
 
 
 def column_scales(cols, rows):
-    """Each column's largest magnitude; a wall force's or impulse's
-    components share the largest of the three (on a slip wall the
-    tangential ones are round-off, 1e-11 N against 1e4 N)"""
+    """Each column's largest magnitude; a vector's components share the
+    largest of the three (an axisymmetric body's radial velocity and a
+    slip wall's tangential force are round-off, 1e-11 N against 1e4 N),
+    and the wall forces share the table's largest force, the impulses its
+    largest impulse (a wall nothing reaches has round-off alone)"""
     scale = np.abs(rows).max(axis=0)
     groups = {}
     for j, c in enumerate(cols):
-        m = re.match(r"^(.*\.[FI])[xyz]$", c)
+        m = re.match(r"^(.*)[xyz]$", c)
         if m:
-            groups.setdefault(m.group(1), []).append(j)
+            w = re.match(r"^.*\.([FI])$", m.group(1))
+            groups.setdefault(w.group(1) if w else m.group(1), []).append(j)
     for js in groups.values():
         scale[js] = scale[js].max()
     return np.maximum(scale, 1e-300)
@@ -328,8 +325,8 @@ def time_index(case, tname):
     return int(re.search(r"^index\s+(\d+);", text, re.M).group(1))
 
 
-def check_parallel(setup_case, straight, run_fn):
-    case = os.path.join(RUN, "parallel")
+def check_parallel(setup_case, straight, run_fn, name="parallel"):
+    case = os.path.join(RUN, name)
     if os.path.lexists(case):
         shutil.rmtree(case)
     shutil.copytree(setup_case, case)
@@ -356,7 +353,7 @@ def check_parallel(setup_case, straight, run_fn):
     ok = same and n >= 1 and dm <= PARALLEL_MASS_TOL and \
         de <= PARALLEL_ENERGY_TOL
     checks.check(
-        "refinementRun_parallel", ok,
+        "refinementRun_" + name, ok,
         "2 processes to %g s: %d changes against the serial run's %d, the "
         "same cells before, after and per level: %s%s; initial and %d "
         "write totals: largest relative difference of the mass %.2g "
@@ -407,6 +404,41 @@ def run_solver(case, end, log="log.impactFoam", parallel=False):
     return path
 
 
+def wedge_run():
+    """The same on the closed axisymmetric wedge (quadCutter): conservation,
+    a resumed run, 2 processes, and a valid mesh at the end"""
+    setup = make_case("wedgeSetup", WEDGE_CELL, True, WEDGE)
+    case = os.path.join(RUN, "wedgeStraight")
+    if os.path.lexists(case):
+        shutil.rmtree(case)
+    shutil.copytree(setup, case)
+    run = read_log(run_solver(case, END))
+    changes = run["changes"][2:]
+    up = sum(1 for a, b, lv in changes if b > a)
+    down = sum(1 for a, b, lv in changes if b < a)
+    if run["initial"] is None or not run["totals"]:
+        checks.fail("refinementRun_wedgeConservation", "no totals in the log")
+    else:
+        dm, de = drift(run)
+        checks.check(
+            "refinementRun_wedgeConservation",
+            up > 0 and down > 0 and dm <= MASS_TOL and de <= ENERGY_TOL,
+            "the wedge, 1 mm cells refined twice, to %g s: %d changes after "
+            "the start's, %d adding cells, %d removing; largest relative "
+            "change of the mass %.2g (bound %g), of E - E0 - unpaid %.2g "
+            "of E0 (bound %g)"
+            % (END, len(changes), up, down, dm, MASS_TOL, de, ENERGY_TOL))
+    log = fc.run(case, ["checkMesh", "-latestTime"], log="log.checkMesh",
+                 check=False)
+    ok = "Mesh OK." in open(log).read()
+    checks.check("refinementRun_wedgeMesh", ok,
+                 "checkMesh on the wedge's last mesh: %s"
+                 % ("Mesh OK" if ok else fc.tail(log)))
+    check_restart("wedgeRestart", case, run, STOP, END,
+                  "the wedge written every 1 us")
+    check_parallel(setup, run, run_solver, "wedgeParallel")
+
+
 def main():
     missing = fc.require_apps("impactSetup", "impactFoam", "decomposePar",
                               "mpirun")
@@ -450,6 +482,7 @@ def main():
         check_restart("restartAtChange", steps_case, steps, stop[0],
                       STEPS_END, "written every %d steps" % STEPS_WRITE)
         check_parallel(setup, straight, run_solver)
+        wedge_run()
     except fc.FoamError as e:
         checks.fail("refinementRun", e.summary)
     checks.note("total %.0f s" % (time.time() - t0))

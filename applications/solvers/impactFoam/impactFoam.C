@@ -35,7 +35,7 @@ Description
 #include "stepControl.H"
 #include "stepReport.H"
 #include "progressLog.H"
-#include "hexRefinement.H"
+#include "adaptiveRefinement.H"
 #include "controlDictCheck.H"
 #include "meshChange.H"
 #include "inputDefaults.H"
@@ -92,7 +92,10 @@ int main(int argc, char *argv[])
     // Adaptive refinement (constant/refinementProperties; docs/numerics.md
     // 11): at the start of a run the mesh is refined where the criteria
     // mark cells, before the solver's parts are built on it
-    autoPtr<hexRefinement> refinement(hexRefinement::New(mesh, phases));
+    autoPtr<adaptiveRefinement> refinement
+    (
+        adaptiveRefinement::New(mesh, phases)
+    );
     if (refinement && runTime.startTimeIndex() == 0)
     {
         refinement->initialise();

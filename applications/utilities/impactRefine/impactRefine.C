@@ -22,7 +22,7 @@ Usage
 
 #include "fvCFD.H"
 #include "phaseSystem.H"
-#include "hexRefinement.H"
+#include "adaptiveRefinement.H"
 
 using namespace Foam;
 
@@ -39,7 +39,10 @@ int main(int argc, char *argv[])
     #include "createMesh.H"
 
     phaseSystem phases(mesh);
-    autoPtr<hexRefinement> refinement(hexRefinement::New(mesh, phases));
+    autoPtr<adaptiveRefinement> refinement
+    (
+        adaptiveRefinement::New(mesh, phases)
+    );
     if (!refinement)
     {
         FatalErrorInFunction

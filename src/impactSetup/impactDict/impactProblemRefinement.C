@@ -9,7 +9,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "impactProblem.H"
-#include "hexRefinement.H"
+#include "adaptiveRefinement.H"
 #include "amrCutter.H"
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
@@ -35,7 +35,7 @@ void Foam::impactProblem::readRefinement()
             << " mesh, write constant/refinementProperties (the same entries):"
             << " the solver refines it at the start" << exit(FatalIOError);
     }
-    hexRefinement::checkSettings(dict_.subDict("refinement"));
+    adaptiveRefinement::checkSettings(dict_.subDict("refinement"));
 }
 
 

@@ -153,7 +153,8 @@ void Foam::quadCutter::analyse()
                     << "Cell " << own[f] << " at "
                     << mesh_.cellCentres()[own[f]] << " has a face on "
                     << pp.type() << " patch " << pp.name() << " that is not"
-                    << " its one face on the " << (cosine > 0 ? "front" : "back")
+                    << " its one face on the "
+                    << (cosine > 0 ? "front" : "back")
                     << " plane (normal " << Sf[f]/mag(Sf[f]) << "): not a"
                     << " mesh one cell thick across " << normal_
                     << exit(FatalError);
@@ -169,29 +170,45 @@ void Foam::quadCutter::analyse()
         {
             FatalErrorInFunction
                 << "Cell " << c << " at " << mesh_.cellCentres()[c]
-                << " has no face on the " << (frontFace_[c] < 0 ? "front" : "back")
+                << " has no face on the "
+                << (frontFace_[c] < 0 ? "front" : "back")
                 << " plane: not a mesh one cell thick across " << normal_
                 << exit(FatalError);
         }
     }
 
-    // Each front point's partner on the back plane
+    // Each front point's partner on the back plane: the other end of the
+    // edges across, which are the side faces' edges from a point of the
+    // front plane only to one of the back plane only
     partner_.setSize(mesh_.nPoints());
     partner_ = -1;
-    const edgeList& edges = mesh_.edges();
     for (const label p : isFront)
     {
         if (isBack.test(p))
         {
             partner_[p] = p;
+        }
+    }
+    forAll(faces, f)
+    {
+        if (planeFace.test(f))
+        {
             continue;
         }
-        for (const label e : mesh_.pointEdges()[p])
+        const face& sf = faces[f];
+        forAll(sf, i)
         {
-            const label q = edges[e].otherVertex(p);
-            if (isBack.test(q) && !isFront.test(q))
+            const label u = sf[i];
+            const label v = sf.nextLabel(i);
+            const bool uFront = isFront.test(u) && !isBack.test(u);
+            const bool vFront = isFront.test(v) && !isBack.test(v);
+            const bool uBack = isBack.test(u) && !isFront.test(u);
+            const bool vBack = isBack.test(v) && !isFront.test(v);
+            if ((uFront && vBack) || (vFront && uBack))
             {
-                if (partner_[p] >= 0)
+                const label p = uFront ? u : v;
+                const label q = uFront ? v : u;
+                if (partner_[p] >= 0 && partner_[p] != q)
                 {
                     FatalErrorInFunction
                         << "Point " << p << " at " << mesh_.points()[p]
@@ -201,6 +218,9 @@ void Foam::quadCutter::analyse()
                 partner_[p] = q;
             }
         }
+    }
+    for (const label p : isFront)
+    {
         if (partner_[p] < 0)
         {
             FatalErrorInFunction
@@ -389,7 +409,8 @@ Foam::bitSet Foam::quadCutter::consistentRefinement
             forAll(pp, i)
             {
                 const label f = pp.start() + i;
-                meet(own[f], nbrLevel[f - nInternal], nbrCanSplit[f - nInternal]);
+                const label b = f - nInternal;
+                meet(own[f], nbrLevel[b], nbrCanSplit[b]);
             }
         }
 
@@ -557,7 +578,15 @@ bool Foam::quadCutter::refine
 bool Foam::quadCutter::unrefine(const bitSet& marked, listener* l)
 {
     const label nCells = mesh_.nCells();
-    const labelListList& pointCells = mesh_.pointCells();
+
+    // The cells of which each point is a corner; the points hanging
+    labelListList pointCells;
+    invertManyToMany(mesh_.nPoints(), corners_, pointCells);
+    bitSet hanging(mesh_.nPoints());
+    forAllConstIters(midPoint_, iter)
+    {
+        hanging.set(iter.val());
+    }
 
     // The middles of split cells: points of level L > 0 that are a corner
     // of four cells of level L, none marked, each with its corner across
@@ -570,7 +599,11 @@ bool Foam::quadCutter::unrefine(const bitSet& marked, listener* l)
     {
         const label L = pointLevel_[x];
         const labelList& pc = pointCells[x];
-        if (L == 0 || pc.size() != 4 || partner_[x] < 0 || partner_[x] == x)
+        if
+        (
+            L == 0 || pc.size() != 4 || hanging.test(x)
+         || partner_[x] < 0 || partner_[x] == x
+        )
         {
             continue;
         }
@@ -637,6 +670,14 @@ bool Foam::quadCutter::unrefine(const bitSet& marked, listener* l)
     const labelList& own = mesh_.faceOwner();
     const labelList& nei = mesh_.faceNeighbour();
     labelList nbrLevel(mesh_.nFaces() - nInternal);
+    bitSet coupled(mesh_.nFaces() - nInternal);
+    for (const polyPatch& pp : mesh_.boundaryMesh())
+    {
+        if (pp.coupled())
+        {
+            coupled.set(identity(pp.size(), pp.start() - nInternal));
+        }
+    }
     for (;;)
     {
         for (label f = nInternal; f < mesh_.nFaces(); ++f)
@@ -663,7 +704,7 @@ bool Foam::quadCutter::unrefine(const bitSet& marked, listener* l)
                         const label n = own[f] == c ? nei[f] : own[f];
                         ok = ok && (group[n] == gi || newLevel[n] <= L);
                     }
-                    else if (mesh_.boundaryMesh()[mesh_.boundaryMesh().whichPatch(f)].coupled())
+                    else if (coupled.test(f - nInternal))
                     {
                         ok = ok && nbrLevel[f - nInternal] <= L;
                     }
@@ -782,6 +823,37 @@ bool Foam::quadCutter::unrefine(const bitSet& marked, listener* l)
                 ch.removed.set(m);
                 ch.removed.set(partner_[m]);
             }
+        }
+    }
+
+    // A point hanging on a processor boundary goes when the cells across
+    // that had it as a corner merge
+    for (const polyPatch& pp : mesh_.boundaryMesh())
+    {
+        if (!pp.coupled())
+        {
+            continue;
+        }
+        for (const label p : pp.meshPoints())
+        {
+            if
+            (
+                partner_[p] >= 0 && pointLevel_[p] > 0
+             && !ch.removed.test(p) && !staysCorner(p)
+            )
+            {
+                ch.removed.set(p);
+                ch.removed.set(partner_[p]);
+            }
+        }
+    }
+
+    // The coarse sides whose middle goes: to it, for the faces' origin
+    forAllConstIters(midPoint_, iter)
+    {
+        if (ch.removed.test(iter.val()))
+        {
+            ch.mergedSide.set(iter.key(), iter.val());
         }
     }
 

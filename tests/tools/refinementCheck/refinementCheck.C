@@ -6,7 +6,7 @@ Application
 
 Description
     Test tool: a refine / unrefine cycle of the case's mesh and phase state
-    (hexRefinement with constant/refinementProperties, phaseRemap), with no
+    (adaptiveRefinement with constant/refinementProperties, phaseRemap), with no
     time step between. From the state at the start time:
     1. maxRefinement times: refine where the criteria mark cells;
     2. then, with no cell marked, unrefine until nothing changes;
@@ -32,7 +32,7 @@ Usage
 
 #include "fvCFD.H"
 #include "phaseSystem.H"
-#include "hexRefinement.H"
+#include "adaptiveRefinement.H"
 #include "foamEigen.H"
 #include "Tuple2.H"
 
@@ -41,7 +41,7 @@ using namespace Foam;
 namespace
 {
 
-void report(const phaseSystem& phases, const hexRefinement& refinement)
+void report(const phaseSystem& phases, const adaptiveRefinement& refinement)
 {
     Info<< "cells " << phases.mesh().globalData().nTotalCells() << " mass";
     vector momentum(Zero);
@@ -126,7 +126,10 @@ int main(int argc, char *argv[])
     #include "createMesh.H"
 
     phaseSystem phases(mesh);
-    autoPtr<hexRefinement> refinement(hexRefinement::New(mesh, phases));
+    autoPtr<adaptiveRefinement> refinement
+    (
+        adaptiveRefinement::New(mesh, phases)
+    );
     if (!refinement)
     {
         FatalErrorInFunction

@@ -1,10 +1,10 @@
-#include "hexRefinement.H"
+#include "adaptiveRefinement.H"
 #include "keywordCheck.H"
 #include "inputDefaults.H"
 
 // * * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * //
 
-const Foam::wordList Foam::hexRefinement::keywords
+const Foam::wordList Foam::adaptiveRefinement::keywords
 ({
     "maxRefinement", "refineInterval", "maxCells", "nBufferLayers",
     "unrefine"
@@ -13,7 +13,7 @@ const Foam::wordList Foam::hexRefinement::keywords
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::hexRefinement::hexRefinement
+Foam::adaptiveRefinement::adaptiveRefinement
 (
     fvMesh& mesh,
     phaseSystem& phases,
@@ -49,7 +49,7 @@ Foam::hexRefinement::hexRefinement
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
-Foam::autoPtr<Foam::hexRefinement> Foam::hexRefinement::New
+Foam::autoPtr<Foam::adaptiveRefinement> Foam::adaptiveRefinement::New
 (
     fvMesh& mesh,
     phaseSystem& phases
@@ -70,13 +70,13 @@ Foam::autoPtr<Foam::hexRefinement> Foam::hexRefinement::New
     }
     const IOdictionary dict(io);
     checkSettings(dict);
-    return autoPtr<hexRefinement>::New(mesh, phases, dict);
+    return autoPtr<adaptiveRefinement>::New(mesh, phases, dict);
 }
 
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
 
-void Foam::hexRefinement::checkSettings(const dictionary& dict)
+void Foam::adaptiveRefinement::checkSettings(const dictionary& dict)
 {
     // Every entry known before any is read
     wordList valid(keywords);
@@ -106,13 +106,13 @@ void Foam::hexRefinement::checkSettings(const dictionary& dict)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::hexRefinement::beforeChange()
+void Foam::adaptiveRefinement::beforeChange()
 {
     remap_.store();
 }
 
 
-void Foam::hexRefinement::afterChange(const mapPolyMesh& map)
+void Foam::adaptiveRefinement::afterChange(const mapPolyMesh& map)
 {
     heat_ += remap_.apply(map);
 }
@@ -120,7 +120,7 @@ void Foam::hexRefinement::afterChange(const mapPolyMesh& map)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::hexRefinement::initialise()
+void Foam::adaptiveRefinement::initialise()
 {
     for (label i = 0; i < maxRefinement_; ++i)
     {
@@ -134,7 +134,7 @@ void Foam::hexRefinement::initialise()
 }
 
 
-bool Foam::hexRefinement::update()
+bool Foam::adaptiveRefinement::update()
 {
     // Counted from the run's first step, also across a restart (the index
     // is written with each time), so that a resumed run changes the mesh
@@ -151,7 +151,7 @@ bool Foam::hexRefinement::update()
 }
 
 
-bool Foam::hexRefinement::adapt(bitSet marked)
+bool Foam::adaptiveRefinement::adapt(bitSet marked)
 {
     const label nOld = mesh_.globalData().nTotalCells();
 
