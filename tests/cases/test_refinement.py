@@ -39,6 +39,10 @@ Decides, for each (refinement_* in 3-D, refinement_wedge* on the wedge):
   bad input      a misspelled entry, no criterion, a value out of range,
                  refinement of a 1-D mesh: each stops with an error naming
                  it;
+  collapsed axis the cycle (conservation, round trip, levels) on the
+                 clayImpact tutorial's wedge at 2 mm cells with its axis
+                 collapsed (prisms at the axis, whose front and back faces
+                 share the axis points), and checkMesh on the refined mesh;
   impactSetup    impactDict's refinement: the rod's volume on the mesh
                  refined at the surfaces within 1e-3 of the exact one and
                  nearer than on the base mesh; every cell a surface crosses
@@ -377,6 +381,53 @@ def wedge_cycle(checks):
                  % (t, "Mesh OK" if ok else fc.tail(log)))
 
 
+# clayImpact's wedge with its axis collapsed: the axis points on both planes
+AXIS = [
+    ("    (0  0.99984769515e-4 -0.01745240644e-4)\n"
+     "    (24 0.99984769515e-4 -0.01745240644e-4)",
+     "    (0  0 0)\n    (24 0 0)"),
+    ("    (0  0.99984769515e-4  0.01745240644e-4)\n"
+     "    (24 0.99984769515e-4  0.01745240644e-4)",
+     "    (0  0 0)\n    (24 0 0)"),
+]
+AXIS_PROPERTIES = PROPERTIES.replace("shocks          { jump 0.1; }\n", "")
+
+
+def collapsed_axis(checks):
+    """The cycle on a wedge whose axis is collapsed"""
+    case = fc.copy_tutorial("clayImpact", "refinement_axis")
+    path = os.path.join(case, "system", "blockMeshDict")
+    with open(path) as f:
+        text = f.read()
+    for old, new in AXIS:
+        if old not in text:
+            raise fc.FoamError("clayImpact blockMeshDict: no %r" % old)
+        text = text.replace(old, new, 1)
+    with open(path, "w") as f:
+        f.write(text)
+    # Its Allrun's set-up without the run
+    allrun = os.path.join(case, "Allrun")
+    with open(allrun) as f:
+        script = f.read()
+    with open(allrun, "w") as f:
+        f.write(re.sub(r"^impactRunSolver.*$", "exit 0", script, flags=re.M))
+    fc.run(case, "./Allrun -h 2", log="log.Allrun")
+    with open(os.path.join(case, "constant", "refinementProperties"),
+              "w") as f:
+        f.write(AXIS_PROPERTIES)
+    rows, rt, levels = parse(fc.run(case, ["refinementCheck", "-write"]))
+    check_cycle(checks, "refinement_axis", rows, rt, levels)
+    t = fc.latest_time(case)
+    log = fc.run(case, ["checkMesh", "-time", t], log="log.checkMesh",
+                 check=False)
+    out = open(log).read()
+    ok = "Mesh OK." in out and re.search(r"prisms:\s+[1-9]", out)
+    checks.check("refinement_axisMesh", bool(ok),
+                 "checkMesh on the refined wedge with a collapsed axis at "
+                 "%s: %s" % (t, "Mesh OK, prisms at the axis" if ok
+                             else fc.tail(log)))
+
+
 def main():
     checks = Checks()
     missing = fc.require_apps("refinementCheck", "impactSetup", "impactFoam",
@@ -451,6 +502,7 @@ def main():
                  % (t, "ran" if "FOAM FATAL" not in out else fc.tail(log)))
 
     wedge_cycle(checks)
+    collapsed_axis(checks)
     bad_input(checks, parallel)
     setup_refinement(checks)
     checks.exit()
