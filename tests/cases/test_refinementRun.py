@@ -49,9 +49,14 @@ Checks
                               after, cells per level) as the serial run's,
                               one by one, and the initial and write totals
                               within 5e-13 relative (mass) and 2e-12
-                              (energy) of the serial run's. Measured: the
-                              48 changes the same, mass 1.2e-13, energy
-                              5.2e-13
+                              (energy) of the serial run's; the cells
+                              shared out again (loadBalancer, maxImbalance
+                              0.1) at least once, the largest process
+                              within 1.1 times the mean at the end.
+                              Measured: the 48 changes the same, mass
+                              1.2e-13, energy 5.2e-13; 6 balances (the
+                              first from 1.30 times the mean), 1.019 at
+                              the end
   refinementRun_deltaT        the first 3 steps with refinement against a
                               uniform 0.5 mm mesh's (the finest level; a
                               run towards 1 us stopped after 3 steps, so
@@ -350,19 +355,28 @@ def check_parallel(setup_case, straight, run_fn, name="parallel"):
             continue
         dm = max(dm, abs(p[0] - s[0]) / s[0])
         de = max(de, abs(p[1] - s[1]) / abs(s[1]))
+    # The cells shared out again after changes (maxImbalance 0.1)
+    m = re.search(r"(\d+) load balances, the largest process's cells over "
+                  r"the mean (\S+) at the end",
+                  open(os.path.join(case, "log.impactFoam.parallel")).read())
+    balances = int(m.group(1)) if m else 0
+    ratio = float(m.group(2)) if m else float("inf")
     ok = same and n >= 1 and dm <= PARALLEL_MASS_TOL and \
-        de <= PARALLEL_ENERGY_TOL
+        de <= PARALLEL_ENERGY_TOL and balances > 0 and ratio <= 1.1
     checks.check(
         "refinementRun_" + name, ok,
         "2 processes to %g s: %d changes against the serial run's %d, the "
         "same cells before, after and per level: %s%s; initial and %d "
         "write totals: largest relative difference of the mass %.2g "
-        "(bound %g), of the energy %.2g (bound %g)"
+        "(bound %g), of the energy %.2g (bound %g); %d load balances "
+        "(must be > 0), the largest process's cells over the mean %.3f at "
+        "the end (bound 1.1)"
         % (PARALLEL_END, len(pchanges), len(serial), same,
            "" if first_diff is None else
            " (first differing change %d: %s against %s)"
            % (first_diff + 1, pchanges[first_diff], serial[first_diff]),
-           n, dm, PARALLEL_MASS_TOL, de, PARALLEL_ENERGY_TOL))
+           n, dm, PARALLEL_MASS_TOL, de, PARALLEL_ENERGY_TOL, balances,
+           ratio))
 
 
 def check_delta_t(straight, uniform2):

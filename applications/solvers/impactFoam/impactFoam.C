@@ -207,7 +207,14 @@ int main(int argc, char *argv[])
         Info<< "Refinement: " << nMeshChanges << " changes of the mesh, "
             << mesh.globalData().nTotalCells() << " cells at the end; "
             << refinementTime << " s of the run's " << runTime.elapsedCpuTime()
-            << " s CPU time in the changes" << nl << endl;
+            << " s CPU time in the changes";
+        if (Pstream::parRun())
+        {
+            Info<< "; " << refinement->nBalances() << " load balances, the"
+                << " largest process's cells over the mean "
+                << 1 + refinement->imbalance() << " at the end";
+        }
+        Info<< nl << endl;
     }
     progress.summary(report.unpaidEnergy());
     runTime.printExecutionTime(Info);

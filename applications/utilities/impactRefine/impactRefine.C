@@ -6,7 +6,7 @@ Application
 
 Description
     Refine a case's mesh where its fields mark cells, before a run
-    (docs/numerics.md section 11.4): constant/refinementProperties'
+    (docs/numerics.md section 11.5): constant/refinementProperties'
     criteria, maxRefinement passes as the solver makes at the start, the
     phase state carried over (phaseRemap). The refined mesh with its
     levels and the fields are written at the start time, over the fields

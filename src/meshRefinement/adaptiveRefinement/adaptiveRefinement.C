@@ -7,7 +7,7 @@
 const Foam::wordList Foam::adaptiveRefinement::keywords
 ({
     "maxRefinement", "refineInterval", "maxCells", "nBufferLayers",
-    "unrefine"
+    "unrefine", "maxImbalance"
 });
 
 
@@ -38,6 +38,11 @@ Foam::adaptiveRefinement::adaptiveRefinement
     cutter_(amrCutter::New(mesh)),
     indicator_(phases, dict),
     remap_(phases),
+    balancer_
+    (
+        mesh,
+        inputDefaults::get<scalar>(dict, "maxImbalance", 0.1, "refinement")
+    ),
     heat_(0)
 {
     Info<< "Refinement: up to " << maxRefinement_ << " levels every "
@@ -94,6 +99,13 @@ void Foam::adaptiveRefinement::checkSettings(const dictionary& dict)
             << "), refineInterval >= 1 (" << refineInterval
             << ") and nBufferLayers >= 0 (" << nBufferLayers << ")"
             << exit(FatalIOError);
+    }
+    const scalar maxImbalance = dict.getOrDefault<scalar>("maxImbalance", 0.1);
+    if (maxImbalance < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Need maxImbalance >= 0 (0: no load balancing), not "
+            << maxImbalance << exit(FatalIOError);
     }
     if (maxCells < 1)
     {
@@ -160,6 +172,16 @@ bool Foam::adaptiveRefinement::adapt(bitSet marked)
     const bool refined =
         cutter_->refine(marked, maxRefinement_, maxCells_, this);
     const bool unrefined = unrefine_ && cutter_->unrefine(marked, this);
+
+    if (refined || unrefined)
+    {
+        autoPtr<mapDistributePolyMesh> map =
+            balancer_.balance(cutter_->families());
+        if (map)
+        {
+            cutter_->distribute(map());
+        }
+    }
 
     // The plastic strains of the current mesh and time, for the next
     // evaluation's rates

@@ -217,6 +217,52 @@ bool Foam::hexCutter::unrefine(const bitSet& marked, listener* l)
 }
 
 
+Foam::labelList Foam::hexCutter::families() const
+{
+    // The history's root of each cell, or the cell itself if never split
+    const refinementHistory& history = cutter_.history();
+    const labelList& visible = history.visibleCells();
+    const DynamicList<refinementHistory::splitCell8>& split =
+        history.splitCells();
+
+    labelList family(mesh_.nCells(), -1);
+    Map<label> rootFamily;
+    label n = 0;
+    forAll(family, c)
+    {
+        label s = visible.size() ? visible[c] : -1;
+        if (s < 0)
+        {
+            family[c] = n++;
+            continue;
+        }
+        while (split[s].parent_ >= 0)
+        {
+            s = split[s].parent_;
+        }
+        const auto iter = rootFamily.cfind(s);
+        if (iter.found())
+        {
+            family[c] = iter.val();
+        }
+        else
+        {
+            rootFamily.insert(s, n);
+            family[c] = n++;
+        }
+    }
+    return family;
+}
+
+
+void Foam::hexCutter::distribute(const mapDistributePolyMesh& map)
+{
+    cutter_.distribute(map);
+    findProtected();
+    changedSinceWrite_ = true;
+}
+
+
 void Foam::hexCutter::setInstance(const fileName& instance)
 {
     if (changedSinceWrite_)

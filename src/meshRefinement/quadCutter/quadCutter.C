@@ -575,46 +575,38 @@ bool Foam::quadCutter::refine
 }
 
 
-bool Foam::quadCutter::unrefine(const bitSet& marked, listener* l)
+void Foam::quadCutter::splitGroups
+(
+    const labelListList& corners,
+    const labelUList& level,
+    const bitSet& exclude,
+    labelListList& pointCells,
+    DynamicList<label>& centres,
+    DynamicList<FixedList<label, 4>>& groups
+) const
 {
-    const label nCells = mesh_.nCells();
-
-    // The cells of which each point is a corner; the points hanging
-    labelListList pointCells;
-    invertManyToMany(mesh_.nPoints(), corners_, pointCells);
-    bitSet hanging(mesh_.nPoints());
-    forAllConstIters(midPoint_, iter)
-    {
-        hanging.set(iter.val());
-    }
-
-    // The middles of split cells: points of level L > 0 that are a corner
-    // of four cells of level L, none marked, each with its corner across
-    // (the parent's) coarser and the two beside it of level L
-    DynamicList<label> centres;
-    List<FixedList<label, 4>> groups;
-    DynamicList<FixedList<label, 4>> found;
-    labelList group(nCells, -1);
-    forAll(pointLevel_, x)
+    // A point of level L > 0 that is a corner of four cells of level L
+    // (then it hangs on no side: the four fill the angle about it), each
+    // with its corner across (the parent's) coarser and the two beside it
+    // of level L, is the middle of their parent
+    invertManyToMany(mesh_.nPoints(), corners, pointCells);
+    boolList grouped(corners.size(), false);
+    forAll(pointCells, x)
     {
         const label L = pointLevel_[x];
         const labelList& pc = pointCells[x];
-        if
-        (
-            L == 0 || pc.size() != 4 || hanging.test(x)
-         || partner_[x] < 0 || partner_[x] == x
-        )
+        if (L == 0 || pc.size() != 4 || partner_[x] < 0 || partner_[x] == x)
         {
             continue;
         }
         bool ok = true;
         for (const label c : pc)
         {
-            const labelList& a = corners_[c];
+            const labelList& a = corners[c];
             const label k = a.find(x);
             ok = ok
-             && cellLevel_[c] == L && k >= 0 && a.size() == 4
-             && !marked.test(c) && !protected_.test(c) && group[c] < 0
+             && level[c] == L && k >= 0 && a.size() == 4
+             && !exclude.test(c) && !grouped[c]
              && pointLevel_[a[(k + 2) % 4]] < L
              && pointLevel_[a[(k + 1) % 4]] == L
              && pointLevel_[a[(k + 3) % 4]] == L;
@@ -629,12 +621,12 @@ bool Foam::quadCutter::unrefine(const bitSet& marked, listener* l)
         g[0] = pc[0];
         for (label i = 1; i < 4; ++i)
         {
-            const labelList& a = corners_[g[i - 1]];
+            const labelList& a = corners[g[i - 1]];
             const label after = a[(a.find(x) + 3) % 4];
             g[i] = -1;
             for (const label c : pc)
             {
-                const labelList& b = corners_[c];
+                const labelList& b = corners[c];
                 if (b[(b.find(x) + 1) % 4] == after)
                 {
                     g[i] = c;
@@ -648,12 +640,91 @@ bool Foam::quadCutter::unrefine(const bitSet& marked, listener* l)
         }
         for (const label c : g)
         {
-            group[c] = found.size();
+            grouped[c] = true;
         }
         centres.append(x);
-        found.append(g);
+        groups.append(g);
     }
-    groups.transfer(found);
+}
+
+
+Foam::labelList Foam::quadCutter::families() const
+{
+    // Merge every split cell back in thought, finest first, and number
+    // each cell by the base cell it is part of
+    const label nCells = mesh_.nCells();
+    labelListList corners(corners_);
+    labelList level(cellLevel_);
+    labelList root(identity(nCells));
+    const label maxLevel = nCells ? max(cellLevel_) : 0;
+    for (label L = maxLevel; L > 0; --L)
+    {
+        labelListList pointCells;
+        DynamicList<label> centres;
+        DynamicList<FixedList<label, 4>> groups;
+        splitGroups
+        (
+            corners, level, bitSet(nCells), pointCells, centres, groups
+        );
+        forAll(groups, gi)
+        {
+            const FixedList<label, 4>& g = groups[gi];
+            labelList parent(4);
+            forAll(g, i)
+            {
+                const labelList& a = corners[g[i]];
+                parent[i] = a[(a.find(centres[gi]) + 2) % 4];
+            }
+            for (label i = 1; i < 4; ++i)
+            {
+                corners[g[i]].clear();
+                root[g[i]] = g[0];
+            }
+            corners[g[0]] = parent;
+            level[g[0]] = L - 1;
+        }
+    }
+
+    // Each cell's base cell, numbered from 0
+    labelList family(nCells, -1);
+    label n = 0;
+    forAll(root, c)
+    {
+        label r = c;
+        while (root[r] != r)
+        {
+            r = root[r];
+        }
+        if (family[r] < 0)
+        {
+            family[r] = n++;
+        }
+        family[c] = family[r];
+    }
+    return family;
+}
+
+
+bool Foam::quadCutter::unrefine(const bitSet& marked, listener* l)
+{
+    const label nCells = mesh_.nCells();
+
+    // The split cells none of whose children is marked
+    bitSet exclude(marked);
+    exclude |= protected_;
+    exclude.resize(nCells);
+    labelListList pointCells;
+    DynamicList<label> centres;
+    DynamicList<FixedList<label, 4>> groups;
+    splitGroups(corners_, cellLevel_, exclude, pointCells, centres, groups);
+    labelList group(nCells, -1);
+    forAll(groups, gi)
+    {
+        for (const label c : groups[gi])
+        {
+            group[c] = gi;
+        }
+    }
 
     // One level at most between the merged cell and its neighbours:
     // merges next to a cell that stays two finer are dropped
@@ -859,6 +930,15 @@ bool Foam::quadCutter::unrefine(const bitSet& marked, listener* l)
 
     apply(ch, l);
     return true;
+}
+
+
+void Foam::quadCutter::distribute(const mapDistributePolyMesh& map)
+{
+    map.distributeCellData(cellLevel_);
+    map.distributePointData(pointLevel_);
+    analyse();
+    changedSinceWrite_ = true;
 }
 
 
