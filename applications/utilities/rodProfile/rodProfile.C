@@ -24,8 +24,9 @@ Description
         z, radius (the rod's profile r(z))
 
     The rod lies along -axis (default (1 0 0)) through -origin (default
-    (0 0 0)). Cells are grouped into slices of equal axial coordinate
-    (structured meshes); in each slice the radius is where alpha falls
+    (0 0 0)). The slices lie between the cells' axial faces (the rows of
+    a structured mesh, the finest rows of a refined one); in each slice
+    the radius is where alpha falls
     through 1/2 going out from the axis (linear between cell centres), so
     traces and mist of the phase in the air do not count. The length
     integrates alpha along the row of cells next to the axis; the undeformed length is the part of the rod

@@ -53,66 +53,88 @@ Foam::rodMeasures::rodMeasures
     zMin(GREAT)
 {
     const vectorField& C = mesh.C().primitiveField();
+    const pointField& points = mesh.points();
 
-    // Every cell's (z, r, alpha), gathered on the master
-    List<List<vector>> cells(Pstream::nProcs());
-    List<vector>& own = cells[Pstream::myProcNo()];
+    // Every cell's axial extent, radius and alpha, gathered on the master
+    List<List<FixedList<scalar, 4>>> cells(Pstream::nProcs());
+    List<FixedList<scalar, 4>>& own = cells[Pstream::myProcNo()];
     own.setSize(C.size());
     forAll(C, celli)
     {
         const vector d(C[celli] - origin);
         const scalar zc = d & axis;
-        own[celli] = vector(zc, mag(d - zc*axis), alpha[celli]);
+        scalar lo = GREAT;
+        scalar hi = -GREAT;
+        for (const label pointi : mesh.cellPoints()[celli])
+        {
+            const scalar zp = (points[pointi] - origin) & axis;
+            lo = min(lo, zp);
+            hi = max(hi, zp);
+        }
+        own[celli] = {lo, hi, mag(d - zc*axis), alpha[celli]};
     }
     Pstream::gatherList(cells);
 
     List<scalar> result(4, Zero);
     if (Pstream::master())
     {
-        // Slices of equal axial coordinate
-        std::map<long long, scalar> axisA, axisR, zOf;
-        std::map<long long, std::vector<std::pair<scalar, scalar>>> rows;
+        // Slices between the cells' axial faces (on a structured mesh the
+        // rows of cells; on a refined one the finest rows, a coarser cell
+        // in each slice it spans)
         const scalar zScale = 1e-9*max(mag(mesh.bounds().span()), SMALL);
-        for (const List<vector>& list : cells)
+        std::map<long long, scalar> faces;
+        for (const List<FixedList<scalar, 4>>& list : cells)
         {
-            for (const vector& c : list)
+            for (const FixedList<scalar, 4>& c : list)
             {
-                const scalar zc = c.x(), r = c.y(), a = c.z();
-                const long long key = std::llround(zc/zScale);
-                zOf[key] = zc;
-                rows[key].push_back({r, a});
-                auto it = axisR.find(key);
-                if (it == axisR.end() || r < it->second)
+                faces[std::llround(c[0]/zScale)] = c[0];
+                faces[std::llround(c[1]/zScale)] = c[1];
+            }
+        }
+        std::vector<scalar> zf;
+        std::vector<long long> keys;
+        for (const auto& kv : faces)
+        {
+            keys.push_back(kv.first);
+            zf.push_back(kv.second);
+        }
+        const label n = max(label(zf.size()) - 1, label(0));
+        std::vector<std::vector<std::pair<scalar, scalar>>> rows(n);
+        List<scalar> axisR(n, GREAT);
+        z.setSize(n);
+        dz.setSize(n);
+        radius.setSize(n);
+        axisAlpha.setSize(n, Zero);
+        for (label i = 0; i < n; ++i)
+        {
+            z[i] = 0.5*(zf[i] + zf[i + 1]);
+            dz[i] = zf[i + 1] - zf[i];
+        }
+        for (const List<FixedList<scalar, 4>>& list : cells)
+        {
+            for (const FixedList<scalar, 4>& c : list)
+            {
+                const label first =
+                    std::lower_bound
+                    (
+                        keys.begin(), keys.end(), std::llround(c[0]/zScale)
+                    ) - keys.begin();
+                const long long last = std::llround(c[1]/zScale);
+                for (label i = first; i < n && keys[i] < last; ++i)
                 {
-                    axisR[key] = r;
-                    axisA[key] = a;
+                    rows[i].push_back({c[2], c[3]});
+                    if (c[2] < axisR[i])
+                    {
+                        axisR[i] = c[2];
+                        axisAlpha[i] = c[3];
+                    }
                 }
             }
         }
 
-        const label n = zOf.size();
-        z.setSize(n);
-        dz.setSize(n);
-        radius.setSize(n);
-        axisAlpha.setSize(n);
-        label i = 0;
-        for (const auto& kv : zOf)
+        for (label i = 0; i < n; ++i)
         {
-            z[i++] = kv.second;
-        }
-
-        // Slice thickness from the spacing of the slices
-        i = 0;
-        for (const auto& kv : zOf)
-        {
-            const long long key = kv.first;
-            if (n < 2) dz[i] = 1;
-            else if (i == 0) dz[i] = z[1] - z[0];
-            else if (i + 1 == n) dz[i] = z[i] - z[i - 1];
-            else dz[i] = 0.5*(z[i + 1] - z[i - 1]);
-
-            radius[i] = edgeRadius(rows[key]);
-            axisAlpha[i] = axisA[key];
+            radius[i] = edgeRadius(rows[i]);
             length += axisAlpha[i]*dz[i];
             if (zMin == GREAT && axisAlpha[i] > 1e-3)
             {
@@ -120,7 +142,6 @@ Foam::rodMeasures::rodMeasures
                 zMin = z[i] + 0.5*dz[i] - axisAlpha[i]*dz[i];
             }
             maxRadius = max(maxRadius, radius[i]);
-            ++i;
         }
 
         // Radius at the impact face. The first slice holding the body
