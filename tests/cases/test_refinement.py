@@ -30,8 +30,9 @@ Decides, for each (refinement_* in 3-D, refinement_wedge* on the wedge):
                  copies is the cell;
   heat           the kinetic energy turned into heat >= -1e-12 of the
                  total energy (merging never creates kinetic energy);
-  parallel       the same on 2 processes: the same cells after every
-                 change and the same sums within 1e-12;
+  parallel       the same on 2 processes (maxImbalance 0: the round trip
+                 compares each process's own cells): the same cells after
+                 every change and the same sums within 1e-12;
   restart        the refined state written (-write) holds the mesh and
                  the levels in its time's polyMesh, impactPlot draws it
                  and the time before on their own meshes, and impactFoam
@@ -114,6 +115,15 @@ def make_case(name, changes=QUARTER):
               "w") as f:
         f.write(PROPERTIES)
     return case
+
+
+def no_balance(case):
+    """The cycle on 2 processes without the load balance: the round trip
+    compares each process's cells with the ones it started with
+    (test_refinementRun checks the balance)"""
+    with open(os.path.join(case, "constant", "refinementProperties"),
+              "w") as f:
+        f.write(PROPERTIES + "maxImbalance    0;\n")
 
 
 def parse(log):
@@ -355,6 +365,7 @@ def wedge_cycle(checks):
     rows, rt, levels = parse(fc.run(case, ["refinementCheck", "-write"]))
     check_cycle(checks, "refinement_wedge", rows, rt, levels)
 
+    no_balance(parallel)
     fc.write_decompose_dict(parallel, 2)
     fc.run(parallel, ["decomposePar", "-force", "-latestTime"])
     prow, prt, plevels = parse(fc.run(
@@ -445,6 +456,7 @@ def main():
     rows, rt, levels = parse(fc.run(case, ["refinementCheck", "-write"]))
     check_cycle(checks, "refinement_serial", rows, rt, levels)
 
+    no_balance(parallel)
     fc.write_decompose_dict(parallel, 2)
     fc.run(parallel, ["decomposePar", "-force", "-latestTime"])
     prow, prt, plevels = parse(fc.run(
