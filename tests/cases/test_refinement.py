@@ -355,15 +355,17 @@ def setup_refinement(checks):
         "1e-3); cells holding a surface below the finest level: %d (must "
         "be 0)" % (errors[0], errors[1], coarse))
 
-def wedge_cycle(checks):
-    """The cycle on the axisymmetric template, serial and on 2 processes"""
-    case = make_case("refinement_wedge", WEDGE)
-    parallel = os.path.join(fc.RUN_DIR, "refinement_wedgeParallel")
+def serial_and_parallel(checks, case, parallel_name, serial_check,
+                        parallel_check, same_check):
+    """The cycle on the case (written at a new time, -write) and on a copy
+    of it decomposed on 2 processes: each checked, and the same cells and
+    sums on both; the serial run's rows"""
+    parallel = os.path.join(fc.RUN_DIR, parallel_name)
     if os.path.lexists(parallel):
         shutil.rmtree(parallel)
     shutil.copytree(case, parallel)
     rows, rt, levels = parse(fc.run(case, ["refinementCheck", "-write"]))
-    check_cycle(checks, "refinement_wedge", rows, rt, levels)
+    check_cycle(checks, serial_check, rows, rt, levels)
 
     no_balance(parallel)
     fc.write_decompose_dict(parallel, 2)
@@ -371,16 +373,25 @@ def wedge_cycle(checks):
     prow, prt, plevels = parse(fc.run(
         parallel, "mpirun -np 2 --oversubscribe refinementCheck -parallel",
         log="log.refinementCheck.parallel"))
-    check_cycle(checks, "refinement_wedgeParallel", prow, prt, plevels)
+    check_cycle(checks, parallel_check, prow, prt, plevels)
     same = len(prow) == len(rows) and all(
         a["cells"] == b["cells"]
         and abs(a["energy"] - b["energy"]) <= 1e-12 * b["energy"]
         and all(abs(x - y) <= 1e-12 * y for x, y in zip(a["mass"], b["mass"]))
         for a, b in zip(prow, rows))
-    checks.check("refinement_wedgeSerialParallel", same,
-                 "the wedge on 2 processes against serial: cells %s and %s, "
-                 "the sums within 1e-12" % ([r["cells"] for r in prow],
-                                            [r["cells"] for r in rows]))
+    checks.check(same_check, same,
+                 "2 processes against serial: cells %s and %s, the sums "
+                 "within 1e-12" % ([r["cells"] for r in prow],
+                                   [r["cells"] for r in rows]))
+    return rows
+
+
+def wedge_cycle(checks):
+    """The cycle on the axisymmetric template, serial and on 2 processes"""
+    case = make_case("refinement_wedge", WEDGE)
+    serial_and_parallel(checks, case, "refinement_wedgeParallel",
+                        "refinement_wedge", "refinement_wedgeParallel",
+                        "refinement_wedgeSerialParallel")
 
     # The written refined mesh is a valid mesh
     t = fc.latest_time(case)
@@ -449,29 +460,9 @@ def main():
 
     case = make_case("refinement_cycle")
     parallel = os.path.join(fc.RUN_DIR, "refinement_parallel")
-    if os.path.lexists(parallel):
-        shutil.rmtree(parallel)
-    shutil.copytree(case, parallel)
-
-    rows, rt, levels = parse(fc.run(case, ["refinementCheck", "-write"]))
-    check_cycle(checks, "refinement_serial", rows, rt, levels)
-
-    no_balance(parallel)
-    fc.write_decompose_dict(parallel, 2)
-    fc.run(parallel, ["decomposePar", "-force", "-latestTime"])
-    prow, prt, plevels = parse(fc.run(
-        parallel, "mpirun -np 2 --oversubscribe refinementCheck -parallel",
-        log="log.refinementCheck.parallel"))
-    check_cycle(checks, "refinement_parallel", prow, prt, plevels)
-    same = len(prow) == len(rows) and all(
-        a["cells"] == b["cells"]
-        and abs(a["energy"] - b["energy"]) <= 1e-12 * b["energy"]
-        and all(abs(x - y) <= 1e-12 * y for x, y in zip(a["mass"], b["mass"]))
-        for a, b in zip(prow, rows))
-    checks.check("refinement_serialParallel", same,
-                 "2 processes against serial: cells %s and %s, the sums "
-                 "within 1e-12" % ([r["cells"] for r in prow],
-                                   [r["cells"] for r in rows]))
+    rows = serial_and_parallel(checks, case, "refinement_parallel",
+                               "refinement_serial", "refinement_parallel",
+                               "refinement_serialParallel")
 
     # The written refined state: mesh and levels with the fields, and the
     # solver runs on from it

@@ -67,4 +67,29 @@ void Foam::amrCutter::extend(bitSet& marked, const label n) const
 }
 
 
+void Foam::amrCutter::setInstance(const fileName& instance)
+{
+    if (changedSinceWrite_)
+    {
+        const fileName inst
+        (
+            instance.empty() ? fileName(mesh_.time().timeName()) : instance
+        );
+        mesh_.setInstance(inst);
+        setLevelsInstance(inst);
+    }
+}
+
+
+void Foam::amrCutter::write(const bool force)
+{
+    if (changedSinceWrite_ && (force || mesh_.time().writeTime()))
+    {
+        writeLevels();
+        mesh_.setInstance(mesh_.facesInstance(), IOobject::NO_WRITE);
+        changedSinceWrite_ = false;
+    }
+}
+
+
 // ************************************************************************* //

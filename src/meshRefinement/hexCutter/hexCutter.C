@@ -11,8 +11,7 @@ Foam::hexCutter::hexCutter(fvMesh& mesh)
 :
     amrCutter(mesh),
     cutter_(mesh, true),
-    protected_(mesh.nCells()),
-    changedSinceWrite_(false)
+    protected_(mesh.nCells())
 {
     checkMesh();
     findProtected();
@@ -123,7 +122,7 @@ Foam::autoPtr<Foam::mapPolyMesh> Foam::hexCutter::change
     mesh_.updateMesh(map());
     cutter_.updateMesh(map());
     findProtected();
-    changedSinceWrite_ = true;
+    changed();
     if (l)
     {
         l->afterChange(map());
@@ -259,32 +258,19 @@ void Foam::hexCutter::distribute(const mapDistributePolyMesh& map)
 {
     cutter_.distribute(map);
     findProtected();
-    changedSinceWrite_ = true;
+    changed();
 }
 
 
-void Foam::hexCutter::setInstance(const fileName& instance)
+void Foam::hexCutter::setLevelsInstance(const fileName& instance)
 {
-    if (changedSinceWrite_)
-    {
-        const fileName inst
-        (
-            instance.empty() ? fileName(mesh_.time().timeName()) : instance
-        );
-        mesh_.setInstance(inst);
-        cutter_.setInstance(inst);
-    }
+    cutter_.setInstance(instance);
 }
 
 
-void Foam::hexCutter::write(const bool force)
+void Foam::hexCutter::writeLevels()
 {
-    if (changedSinceWrite_ && (force || mesh_.time().writeTime()))
-    {
-        cutter_.write();
-        mesh_.setInstance(mesh_.facesInstance(), IOobject::NO_WRITE);
-        changedSinceWrite_ = false;
-    }
+    cutter_.write();
 }
 
 

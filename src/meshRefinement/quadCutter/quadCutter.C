@@ -43,8 +43,7 @@ Foam::quadCutter::quadCutter(fvMesh& mesh)
         ),
         labelList(mesh.nPoints(), Zero)
     ),
-    normal_(Zero),
-    changedSinceWrite_(false)
+    normal_(Zero)
 {
     if
     (
@@ -431,6 +430,21 @@ Foam::bitSet Foam::quadCutter::consistentRefinement
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::quadCutter::change Foam::quadCutter::unchanged() const
+{
+    const label nCells = mesh_.nCells();
+    change ch;
+    ch.corners = corners_;
+    ch.level = cellLevel_;
+    ch.origin = identity(nCells);
+    ch.mergeInto = labelList(nCells, -1);
+    ch.partner = partner_;
+    ch.midPoint = midPoint_;
+    ch.removed.resize(mesh_.nPoints());
+    return ch;
+}
+
+
 bool Foam::quadCutter::refine
 (
     bitSet& marked,
@@ -463,15 +477,7 @@ bool Foam::quadCutter::refine
     }
 
     // The change: each split cell keeps its label for its first child
-    const label nCells = mesh_.nCells();
-    change ch;
-    ch.corners = corners_;
-    ch.level = cellLevel_;
-    ch.origin = identity(nCells);
-    ch.mergeInto = labelList(nCells, -1);
-    ch.partner = partner_;
-    ch.midPoint = midPoint_;
-    ch.removed.resize(mesh_.nPoints());
+    change ch(unchanged());
 
     // The middles of the split cells' sides, shared with a neighbour
     // splitting too (across processors as well)
@@ -802,14 +808,7 @@ bool Foam::quadCutter::unrefine(const bitSet& marked, listener* l)
     }
 
     // The change: the first of the four (lowest label) keeps the parent
-    change ch;
-    ch.corners = corners_;
-    ch.level = cellLevel_;
-    ch.origin = identity(nCells);
-    ch.mergeInto = labelList(nCells, -1);
-    ch.partner = partner_;
-    ch.midPoint = midPoint_;
-    ch.removed.resize(mesh_.nPoints());
+    change ch(unchanged());
 
     // Whether a point is a corner of a cell (here or across a processor)
     // after the change
@@ -938,34 +937,21 @@ void Foam::quadCutter::distribute(const mapDistributePolyMesh& map)
     map.distributeCellData(cellLevel_);
     map.distributePointData(pointLevel_);
     analyse();
-    changedSinceWrite_ = true;
+    changed();
 }
 
 
-void Foam::quadCutter::setInstance(const fileName& instance)
+void Foam::quadCutter::setLevelsInstance(const fileName& instance)
 {
-    if (changedSinceWrite_)
-    {
-        const fileName inst
-        (
-            instance.empty() ? fileName(mesh_.time().timeName()) : instance
-        );
-        mesh_.setInstance(inst);
-        cellLevel_.instance() = inst;
-        pointLevel_.instance() = inst;
-    }
+    cellLevel_.instance() = instance;
+    pointLevel_.instance() = instance;
 }
 
 
-void Foam::quadCutter::write(const bool force)
+void Foam::quadCutter::writeLevels()
 {
-    if (changedSinceWrite_ && (force || mesh_.time().writeTime()))
-    {
-        cellLevel_.write();
-        pointLevel_.write();
-        mesh_.setInstance(mesh_.facesInstance(), IOobject::NO_WRITE);
-        changedSinceWrite_ = false;
-    }
+    cellLevel_.write();
+    pointLevel_.write();
 }
 
 

@@ -306,7 +306,7 @@ Foam::autoPtr<Foam::mapPolyMesh> Foam::quadCutter::apply
     pointLevel_.transfer(pointLevel);
 
     analyse();
-    changedSinceWrite_ = true;
+    changed();
 
     if (l)
     {
