@@ -71,7 +71,16 @@ Checks
                               conservation with changes both ways (same
                               bounds), checkMesh on the last mesh, resumed
                               at 2 us, 2 processes
-About 170 s on 2 cores.
+  refinementRun_wedgeSliding  the wedge with Coulomb friction (mu 0.1)
+                              between rod and plate (numerics.md 9.3a: the
+                              band's per-cell storage follows the start's
+                              refinement, which adds cells) to 3 us:
+                              changes both ways, mass and energy within
+                              the bounds above, the solids sliding at the
+                              end (slip velocities in the band's cells;
+                              before the fix the run stopped at its first
+                              step, a segmentation fault)
+About 190 s on 2 cores.
 """
 import os
 import re
@@ -141,15 +150,17 @@ CHANGE = re.compile(r"^Refinement: (\d+) -> (\d+) cells, per level "
 INITIAL = re.compile(r"^Initial totals: mass (\S+) kg, energy (\S+) J", re.M)
 TOTALS = re.compile(r"^    totals: mass (\S+) kg, energy (\S+) J, energy "
                     r"added without a payer (\S+) J", re.M)
+FRICTION = re.compile(r"^    totals: .*, heat of friction between sliding "
+                      r"solids (\S+) J", re.M)
 STEP = re.compile(r"^Time = (\S+)  deltaT = (\S+)", re.M)
 
 checks = Checks()
 
 
-def make_case(name, cell_size, refine, changes=QUARTER):
+def make_case(name, cell_size, refine, changes=QUARTER, extra=""):
     """The closed quarter (or wedge) set up (impactSetup) on cells of
-    cell_size, with or without constant/refinementProperties; fields with
-    17 digits"""
+    cell_size, with or without constant/refinementProperties, extra
+    entries added to the impactDict; fields with 17 digits"""
     case = fc.copy_tutorial(TEMPLATE, name, run_dir=RUN)
     path = os.path.join(case, "system", "impactDict")
     with open(path) as f:
@@ -159,7 +170,7 @@ def make_case(name, cell_size, refine, changes=QUARTER):
             raise fc.FoamError("template impactDict: no %r" % old)
         text = text.replace(old, new % cell_size if "%g" in new else new, 1)
     with open(path, "w") as f:
-        f.write(text)
+        f.write(text + extra)
     fc.set_entry(case, "system/controlDict", "writePrecision", "17")
     fc.set_entry(case, "system/controlDict", "progressInterval", "0")
     fc.run(case, ["impactSetup"])
@@ -453,6 +464,48 @@ def wedge_run():
     check_parallel(setup, run, run_solver, "wedgeParallel")
 
 
+def wedge_sliding_run():
+    """The closed wedge with rod and plate sliding (Coulomb): the run goes
+    through the start's refinement and the changes after it, conserving
+    mass and energy, with friction"""
+    setup = make_case("wedgeSlidingSetup", WEDGE_CELL, True, WEDGE,
+                      "\ncontacts { default { type coulomb; mu 0.1; } }\n")
+    try:
+        log = run_solver(setup, END)
+    except fc.FoamError as e:
+        checks.fail("refinementRun_wedgeSliding", e.summary)
+        return
+    run = read_log(log)
+    friction = [float(v) for v in FRICTION.findall(open(log).read())]
+    changes = run["changes"]
+    up = sum(1 for a, b, lv in changes if b > a)
+    down = sum(1 for a, b, lv in changes if b < a)
+    if run["initial"] is None or not run["totals"] or not friction:
+        checks.fail("refinementRun_wedgeSliding",
+                    "no totals in the log: %s" % fc.tail(log))
+        return
+    dm, de = drift(run)
+    last = fc.time_dirs(setup)[-1][1]
+    slip = 0
+    for k in ("rod", "plate"):
+        for comp in "xy":
+            slip = np.maximum(slip, np.abs(fc.read_field(
+                setup, last, "slipU%s.%s" % (comp, k))))
+    sliding = int(np.count_nonzero(slip > 1e-6))
+    checks.check(
+        "refinementRun_wedgeSliding",
+        up > 0 and down > 0 and dm <= MASS_TOL and de <= ENERGY_TOL
+        and sliding > 0,
+        "the wedge with Coulomb friction, 1 mm cells refined twice, to %g s:"
+        " %d changes (the first %d -> %d cells), %d adding cells, %d "
+        "removing; largest relative change of the mass %.2g (bound %g), of"
+        " E - E0 - unpaid %.2g of E0 (bound %g); %d cells with a slip "
+        "velocity at the end; heat of friction %.3g J"
+        % (END, len(changes), changes[0][0] if changes else -1,
+           changes[0][1] if changes else -1, up, down, dm, MASS_TOL, de,
+           ENERGY_TOL, sliding, friction[-1]))
+
+
 def main():
     missing = fc.require_apps("impactSetup", "impactFoam", "decomposePar",
                               "mpirun")
@@ -497,6 +550,7 @@ def main():
                       STEPS_END, "written every %d steps" % STEPS_WRITE)
         check_parallel(setup, straight, run_solver)
         wedge_run()
+        wedge_sliding_run()
     except fc.FoamError as e:
         checks.fail("refinementRun", e.summary)
     checks.note("total %.0f s" % (time.time() - t0))

@@ -98,7 +98,13 @@ int main(int argc, char *argv[])
     );
     if (refinement && runTime.startTimeIndex() == 0)
     {
-        refinement->initialise();
+        if (refinement->initialise())
+        {
+            // The phase system's per-cell storage (the sliding interfaces'
+            // band) follows the refined mesh; the other parts are built on
+            // it below
+            phases.updateMesh();
+        }
     }
 
     demSolver dem(phases, mesh.schemesDict().subOrEmptyDict("discreteEquations"));

@@ -132,8 +132,9 @@ void Foam::adaptiveRefinement::afterChange(const mapPolyMesh& map)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::adaptiveRefinement::initialise()
+bool Foam::adaptiveRefinement::initialise()
 {
+    bool changed = false;
     for (label i = 0; i < maxRefinement_; ++i)
     {
         bitSet marked(mesh_.nCells());
@@ -142,7 +143,9 @@ void Foam::adaptiveRefinement::initialise()
         {
             break;
         }
+        changed = true;
     }
+    return changed;
 }
 
 
