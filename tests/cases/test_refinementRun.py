@@ -475,10 +475,12 @@ def wedge_sliding_run():
     the start's change and those after it, conserving mass and energy, and
     releases the heat of friction of the uniform mesh of its finest cells"""
     contacts = "\ncontacts { default { type coulomb; mu 0.1; } }\n"
+    # impactDict's refinement entry: PROPERTIES without its FoamFile header
+    # (its first two lines)
+    refinement = "refinement { %s }\n" % " ".join(
+        line.strip() for line in PROPERTIES.splitlines()[2:])
     setup = make_case("wedgeSlidingSetup", WEDGE_CELL, False, WEDGE,
-                      contacts + "refinement { " + " ".join(
-                          line.strip() for line in
-                          PROPERTIES.splitlines()[2:]) + " }\n")
+                      contacts + refinement)
     uniform = make_case("wedgeSlidingUniform", WEDGE_CELL/4, False, WEDGE,
                         contacts)
     try:
