@@ -511,6 +511,19 @@ def read_history(case, name):
     return ["Time"] + header[2:], np.atleast_2d(np.loadtxt(path))
 
 
+def solver_clock_time(case, log="log.impactFoam"):
+    """The solver's wall time: the last ClockTime of its log (nan without
+    one)"""
+    clock = [line.split()[-2] for line in open(os.path.join(case, log))
+             if line.startswith("ExecutionTime") and "ClockTime" in line]
+    return float(clock[-1]) if clock else float("nan")
+
+
+def n_processors(case):
+    """The processor directories of a decomposed case (0: serial)"""
+    return len([n for n in os.listdir(case) if n.startswith("processor")])
+
+
 def cell_centres(case, time="0"):
     """Cell centres (N, 3): runs postProcess -func writeCellCentres -time t
     (once; the result C is kept in the time directory) and reads C."""
