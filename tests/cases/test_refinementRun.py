@@ -207,6 +207,12 @@ def read_log(log):
             "totals": totals, "steps": steps}
 
 
+def directions(changes):
+    """The number of changes that add cells and that remove cells"""
+    return (sum(1 for a, b, lv in changes if b > a),
+            sum(1 for a, b, lv in changes if b < a))
+
+
 def drift(run):
     """Largest relative change of the mass and of E - unpaid from the
     initial totals over the totals lines"""
@@ -218,8 +224,7 @@ def drift(run):
 
 def check_conservation(straight, uniform):
     changes = straight["changes"][2:]     # after the start's refinement
-    up = sum(1 for a, b, lv in changes if b > a)
-    down = sum(1 for a, b, lv in changes if b < a)
+    up, down = directions(changes)
     checks.check("refinementRun_changes", up > 0 and down > 0,
                  "%d changes in the run after the start's %s: %d add "
                  "cells, %d remove cells; cells %d to %d"
@@ -444,8 +449,7 @@ def wedge_run():
     shutil.copytree(setup, case)
     run = read_log(run_solver(case, END))
     changes = run["changes"][2:]
-    up = sum(1 for a, b, lv in changes if b > a)
-    down = sum(1 for a, b, lv in changes if b < a)
+    up, down = directions(changes)
     if run["initial"] is None or not run["totals"]:
         checks.fail("refinementRun_wedgeConservation", "no totals in the log")
     else:
@@ -494,8 +498,7 @@ def wedge_sliding_run():
     friction_uniform = [float(v) for v in
                         FRICTION.findall(open(uniform_log).read())]
     changes = run["changes"]
-    up = sum(1 for a, b, lv in changes if b > a)
-    down = sum(1 for a, b, lv in changes if b < a)
+    up, down = directions(changes)
     if run["initial"] is None or not run["totals"] or not friction \
             or not friction_uniform:
         checks.fail("refinementRun_wedgeSliding",
